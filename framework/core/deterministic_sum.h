@@ -1,0 +1,49 @@
+// Reductions whose result does not depend on the thread count or on the particle order.
+//
+// Sums that steer control flow (the PCISPH stopping test) use fixed-point integers, which add
+// associatively: any order, any thread count, the same bits. Sums that only feed metrics use
+// fixed-size blocks added in index order, which is independent of the thread count.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "framework/executors/cpu/cpu_executor.h"
+
+namespace upf {
+
+// Sum of value(i) for i in [0, n), exact in fixed point with `fraction_bits` bits after the
+// binary point. Values must satisfy |value| * 2^fraction_bits * n < 2^63.
+template <class Value>
+double fixed_point_sum(const CpuExecutor& exec, std::size_t n, Value&& value,
+                       int fraction_bits = 32) {
+  const double scale = std::ldexp(1.0, fraction_bits);
+  const std::int64_t count = static_cast<std::int64_t>(n);
+  std::int64_t total = 0;
+#pragma omp parallel for schedule(static) reduction(+ : total) num_threads(exec.threads())
+  for (std::int64_t i = 0; i < count; ++i)
+    total += static_cast<std::int64_t>(std::llround(double(value(std::size_t(i))) * scale));
+  return double(total) / scale;
+}
+
+// Sum of value(i) in blocks of 4096 added in index order: bitwise the same for any thread count.
+template <class Value>
+double block_sum(const CpuExecutor& exec, std::size_t n, Value&& value) {
+  constexpr std::size_t kBlock = 4096;
+  const std::size_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<double> partial(blocks, 0.0);
+  exec.for_each(blocks, [&](std::size_t b) {
+    double s = 0;
+    const std::size_t end = std::min(n, (b + 1) * kBlock);
+    for (std::size_t i = b * kBlock; i < end; ++i) s += double(value(i));
+    partial[b] = s;
+  });
+  double total = 0;
+  for (double p : partial) total += p;
+  return total;
+}
+
+}  // namespace upf

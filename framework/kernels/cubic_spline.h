@@ -1,0 +1,47 @@
+// Cubic spline kernel (Monaghan 1992, "Smoothed particle hydrodynamics", Annu. Rev. Astron.
+// Astrophys. 30), written with the support radius H (= 2h) as in SPlisHSPlasH:
+//   q = r / H,  W = k (6q^3 - 6q^2 + 1) for q <= 1/2,  W = 2k (1 - q)^3 for q <= 1,  k = 8/(pi H^3).
+// The default kernel of every fluid solver.
+#pragma once
+
+#include "framework/core/vec3.h"
+
+namespace upf {
+
+class CubicSplineKernel {
+ public:
+  CubicSplineKernel() = default;
+  UPF_HD explicit CubicSplineKernel(Real support_radius)
+      : h_(support_radius),
+        inv_h_(Real(1) / support_radius),
+        k_(Real(8) / (kPi * support_radius * support_radius * support_radius)),
+        l_(Real(48) / (kPi * support_radius * support_radius * support_radius)) {}
+
+  UPF_HD Real support_radius() const { return h_; }
+
+  UPF_HD Real value(Real r) const {
+    const Real q = r * inv_h_;
+    if (q > Real(1)) return 0;
+    if (q <= Real(0.5)) return k_ * (Real(6) * q * q * q - Real(6) * q * q + Real(1));
+    const Real a = Real(1) - q;
+    return k_ * Real(2) * a * a * a;
+  }
+  UPF_HD Real value(const Vec3& r) const { return value(norm(r)); }
+
+  // Gradient with respect to the first particle's position, r = x_i - x_j.
+  UPF_HD Vec3 gradient(const Vec3& r) const {
+    const Real rl = norm(r);
+    const Real q = rl * inv_h_;
+    if (q > Real(1) || rl <= Real(1e-9) * h_) return {};
+    const Vec3 dir = r / (rl * h_);  // grad q = r / (|r| H)
+    if (q <= Real(0.5)) return dir * (l_ * q * (Real(3) * q - Real(2)));
+    const Real a = Real(1) - q;
+    return dir * (-l_ * a * a);
+  }
+
+ private:
+  static constexpr Real kPi = Real(3.14159265358979323846);
+  Real h_ = 0, inv_h_ = 0, k_ = 0, l_ = 0;
+};
+
+}  // namespace upf

@@ -1,0 +1,174 @@
+#include "framework/neighbours/neighbour_grid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "framework/neighbours/morton.h"
+
+namespace upf {
+
+NeighbourGrid::NeighbourGrid(Real cell_size) : cell_size_(cell_size) {}
+
+void NeighbourGrid::cell_coords(const Vec3& x, std::uint32_t c[3]) const {
+  for (int a = 0; a < 3; ++a) {
+    // Far-away particles are clamped into the last cell: lists stay exact (distances are checked),
+    // only slower, and the instability check stops such runs long before.
+    const double cell = std::floor(double(x[a] - origin_[a]) / double(cell_size_));
+    c[a] = static_cast<std::uint32_t>(std::clamp(cell, 0.0, double(kMortonAxisMax - 1)));
+  }
+}
+
+std::uint64_t NeighbourGrid::key_of(const Vec3& x) const {
+  std::uint32_t c[3];
+  cell_coords(x, c);
+  return morton_key(c[0], c[1], c[2]);
+}
+
+void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
+  const std::size_t n = particles.size();
+  Real lo[3] = {std::numeric_limits<Real>::max(), std::numeric_limits<Real>::max(),
+                std::numeric_limits<Real>::max()};
+  const Vec3* x = particles.position.data();
+  const std::int64_t count = static_cast<std::int64_t>(n);
+  Real lx = lo[0], ly = lo[1], lz = lo[2];
+#pragma omp parallel for schedule(static) num_threads(exec.threads()) \
+    reduction(min : lx, ly, lz)
+  for (std::int64_t i = 0; i < count; ++i) {
+    lx = std::min(lx, x[i].x);
+    ly = std::min(ly, x[i].y);
+    lz = std::min(lz, x[i].z);
+  }
+  // One empty cell below the lowest particle, so that "cell - 1" never wraps.
+  origin_ = n ? Vec3{lx - cell_size_, ly - cell_size_, lz - cell_size_} : Vec3{};
+
+  keys_.resize(n);
+  exec.for_each(n, [&](std::size_t i) { keys_[i] = key_of(x[i]); });
+
+  // Start from id order, then a stable sort by key gives (key, id) order.
+  const ParticleId id_bound = particles.id_bound();
+  sort_scratch_.assign(id_bound, std::numeric_limits<std::uint32_t>::max());
+  for (std::size_t i = 0; i < n; ++i) sort_scratch_[particles.id[i]] = std::uint32_t(i);
+  sorted_.clear();
+  sorted_.reserve(n);
+  for (std::uint32_t slot : sort_scratch_)
+    if (slot != std::numeric_limits<std::uint32_t>::max()) sorted_.push_back(slot);
+  sort_by_key(n);
+
+  cell_keys_.clear();
+  cell_begin_.clear();
+  cell_of_.resize(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint64_t k = keys_[sorted_[s]];
+    if (cell_keys_.empty() || cell_keys_.back() != k) {
+      cell_keys_.push_back(k);
+      cell_begin_.push_back(std::uint32_t(s));
+    }
+    cell_of_[sorted_[s]] = std::uint32_t(cell_keys_.size() - 1);
+  }
+  cell_begin_.push_back(std::uint32_t(n));
+}
+
+// LSD radix sort of sorted_ by keys_, 8 bits a pass; passes whose digit is the same for every
+// particle are skipped. Stable, so equal keys keep their id order.
+void NeighbourGrid::sort_by_key(std::size_t n) {
+  constexpr int kPasses = 8;
+  std::array<std::array<std::uint32_t, 256>, kPasses> histogram{};
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint64_t k = keys_[i];
+    for (int p = 0; p < kPasses; ++p) ++histogram[p][(k >> (8 * p)) & 0xff];
+  }
+  sort_scratch_.resize(n);
+  for (int p = 0; p < kPasses; ++p) {
+    auto& h = histogram[p];
+    if (std::any_of(h.begin(), h.end(), [n](std::uint32_t c) { return c == n; })) continue;
+    std::uint32_t sum = 0;
+    for (auto& c : h) {
+      const std::uint32_t c0 = c;
+      c = sum;
+      sum += c0;
+    }
+    for (std::size_t s = 0; s < n; ++s) {
+      const std::uint32_t i = sorted_[s];
+      sort_scratch_[h[(keys_[i] >> (8 * p)) & 0xff]++] = i;
+    }
+    sorted_.swap(sort_scratch_);
+  }
+}
+
+int NeighbourGrid::neighbour_cells(std::size_t cell, CellRange ranges[27]) const {
+  std::uint32_t c[3];
+  const std::uint64_t key = cell_keys_[cell];
+  c[0] = compact_bits_3d(key);
+  c[1] = compact_bits_3d(key >> 1);
+  c[2] = compact_bits_3d(key >> 2);
+  int found = 0;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::int64_t nx = std::int64_t(c[0]) + dx, ny = std::int64_t(c[1]) + dy,
+                           nz = std::int64_t(c[2]) + dz;
+        if (nx < 0 || ny < 0 || nz < 0 || nx > kMortonAxisMax || ny > kMortonAxisMax ||
+            nz > kMortonAxisMax)
+          continue;
+        const std::uint64_t k = morton_key(std::uint32_t(nx), std::uint32_t(ny), std::uint32_t(nz));
+        auto it = std::lower_bound(cell_keys_.begin(), cell_keys_.end(), k);
+        if (it == cell_keys_.end() || *it != k) continue;
+        const std::size_t j = std::size_t(it - cell_keys_.begin());
+        ranges[found++] = {cell_begin_[j], cell_begin_[j + 1]};
+      }
+  return found;
+}
+
+void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query, TypeMask target,
+                                    Real radius, const CpuExecutor& exec,
+                                    NeighbourList& out) const {
+  const std::size_t n = particles.size();
+  const Vec3* x = particles.position.data();
+  const ParticleType* type = particles.type.data();
+  const Real r2 = radius * radius;
+  out.offsets.assign(n + 1, 0);
+
+  // Pass 1 counts, pass 2 fills. A particle's neighbours are all found by one thread in one
+  // go, so it writes only its own slots, in a fixed order.
+  auto visit = [&](auto&& per_particle) {
+    exec.for_each_dynamic(cell_keys_.size(), [&](std::size_t cell) {
+      bool any_query = false;
+      for (std::uint32_t s = cell_begin_[cell]; s < cell_begin_[cell + 1]; ++s)
+        any_query = any_query || in_mask(query, type[sorted_[s]]);
+      if (!any_query) return;
+      CellRange ranges[27];
+      const int found = neighbour_cells(cell, ranges);
+      for (std::uint32_t s = cell_begin_[cell]; s < cell_begin_[cell + 1]; ++s) {
+        const std::uint32_t i = sorted_[s];
+        if (!in_mask(query, type[i])) continue;
+        const Vec3 xi = x[i];
+        per_particle(i, [&](auto&& emit) {
+          for (int c = 0; c < found; ++c)
+            for (std::uint32_t t = ranges[c].begin; t < ranges[c].end; ++t) {
+              const std::uint32_t j = sorted_[t];
+              if (j == i || !in_mask(target, type[j])) continue;
+              if (squared_norm(xi - x[j]) < r2) emit(j);
+            }
+        });
+      }
+    });
+  };
+
+  std::uint32_t* offsets = out.offsets.data();
+  visit([&](std::uint32_t i, auto&& each) {
+    std::uint32_t k = 0;
+    each([&](std::uint32_t) { ++k; });
+    offsets[i + 1] = k;
+  });
+  for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
+  out.indices.resize(offsets[n]);
+  std::uint32_t* indices = out.indices.data();
+  visit([&](std::uint32_t i, auto&& each) {
+    std::uint32_t* slot = indices + offsets[i];
+    each([&](std::uint32_t j) { *slot++ = j; });
+  });
+}
+
+}  // namespace upf

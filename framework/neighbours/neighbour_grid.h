@@ -1,0 +1,58 @@
+// Uniform-grid neighbour search with Morton-ordered cells and a counting (radix) sort.
+//
+// The grid's cell edge equals the search radius, so a particle's neighbours lie in the 27 cells
+// around it. Particles are sorted by (cell Morton key, stable id); neighbour lists list the 27
+// cells in a fixed order and the particles of a cell in id order. A list therefore depends only on
+// positions and ids, never on where particles sit in memory: reordering particles for locality
+// cannot change a single bit of a simulation.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "framework/core/particle_type.h"
+#include "framework/executors/cpu/cpu_executor.h"
+#include "framework/neighbours/neighbour_list.h"
+#include "framework/particles/particles.h"
+
+namespace upf {
+
+class NeighbourGrid {
+ public:
+  explicit NeighbourGrid(Real cell_size);
+
+  Real cell_size() const { return cell_size_; }
+
+  // Sorts all particles into cells. Positions must be finite.
+  void build(const Particles& particles, const CpuExecutor& exec);
+
+  // Particle indices in (cell key, id) order: the locality order used for reordering.
+  const std::vector<std::uint32_t>& sorted_order() const { return sorted_; }
+  std::size_t cell_count() const { return cell_keys_.size(); }
+
+  // Lists, for every particle whose type is in `query`, the other particles whose type is in
+  // `target` within `radius` (<= cell size), excluding the particle itself.
+  void find_neighbours(const Particles& particles, TypeMask query, TypeMask target, Real radius,
+                       const CpuExecutor& exec, NeighbourList& out) const;
+
+ private:
+  struct CellRange {
+    std::uint32_t begin, end;
+  };
+  std::uint64_t key_of(const Vec3& x) const;
+  void cell_coords(const Vec3& x, std::uint32_t c[3]) const;
+  // The 27 neighbour cell ranges of the cell holding sorted slot `cell`, in a fixed order.
+  int neighbour_cells(std::size_t cell, CellRange ranges[27]) const;
+  void sort_by_key(std::size_t n);
+
+  Real cell_size_;
+  Vec3 origin_{};
+  std::vector<std::uint64_t> keys_;        // per particle (memory order)
+  std::vector<std::uint32_t> sorted_;      // particle indices in (key, id) order
+  std::vector<std::uint32_t> sort_scratch_;
+  std::vector<std::uint64_t> cell_keys_;   // distinct keys, ascending
+  std::vector<std::uint32_t> cell_begin_;  // into sorted_, size cell_count()+1
+  std::vector<std::uint32_t> cell_of_;     // per particle: its cell index
+};
+
+}  // namespace upf

@@ -1,0 +1,104 @@
+#include "framework/particles/particles.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace upf {
+
+namespace {
+// Applies new[i] = old[order[i]] through a scratch buffer that is reused between calls.
+template <class T>
+void apply_order(std::vector<T>& values, const std::vector<std::uint32_t>& order,
+                 std::vector<std::uint8_t>& scratch) {
+  const std::size_t bytes = values.size() * sizeof(T);
+  if (scratch.size() < bytes) scratch.resize(bytes);
+  std::memcpy(scratch.data(), values.data(), bytes);
+  const T* old_values = reinterpret_cast<const T*>(scratch.data());
+  for (std::size_t i = 0; i < order.size(); ++i) values[i] = old_values[order[i]];
+}
+}  // namespace
+
+std::size_t Particles::count(ParticleType t) const {
+  return static_cast<std::size_t>(std::count(type.begin(), type.end(), t));
+}
+
+std::size_t Particles::add(const Vec3& x, const Vec3& v, Real m, ParticleType t, MaterialId mat,
+                           BodyId b) {
+  position.push_back(x);
+  velocity.push_back(v);
+  mass.push_back(m);
+  type.push_back(t);
+  material.push_back(mat);
+  id.push_back(next_id_++);
+  body.push_back(b);
+  boundary_volume.push_back(0);
+  for (auto& [name, f] : scalars_) f.values.push_back(Real(0));
+  for (auto& [name, f] : vectors_) f.values.push_back(Vec3{});
+  return size() - 1;
+}
+
+void Particles::reserve(std::size_t n) {
+  position.reserve(n);
+  velocity.reserve(n);
+  mass.reserve(n);
+  type.reserve(n);
+  material.reserve(n);
+  id.reserve(n);
+  body.reserve(n);
+  boundary_volume.reserve(n);
+}
+
+std::vector<Real>& Particles::scalar_field(const std::string& name, Real init, bool exported) {
+  auto [it, inserted] = scalars_.try_emplace(name);
+  if (inserted) it->second.values.assign(size(), init);
+  it->second.exported = it->second.exported || exported;
+  return it->second.values;
+}
+
+std::vector<Vec3>& Particles::vector_field(const std::string& name, Vec3 init, bool exported) {
+  auto [it, inserted] = vectors_.try_emplace(name);
+  if (inserted) it->second.values.assign(size(), init);
+  it->second.exported = it->second.exported || exported;
+  return it->second.values;
+}
+
+const std::vector<Real>* Particles::find_scalar(const std::string& name) const {
+  auto it = scalars_.find(name);
+  return it == scalars_.end() ? nullptr : &it->second.values;
+}
+
+const std::vector<Vec3>* Particles::find_vector(const std::string& name) const {
+  auto it = vectors_.find(name);
+  return it == vectors_.end() ? nullptr : &it->second.values;
+}
+
+void Particles::permute(const std::vector<std::uint32_t>& order) {
+  apply_order(position, order, permute_scratch_);
+  apply_order(velocity, order, permute_scratch_);
+  apply_order(mass, order, permute_scratch_);
+  apply_order(type, order, permute_scratch_);
+  apply_order(material, order, permute_scratch_);
+  apply_order(id, order, permute_scratch_);
+  apply_order(body, order, permute_scratch_);
+  apply_order(boundary_volume, order, permute_scratch_);
+  for (auto& [name, f] : scalars_) apply_order(f.values, order, permute_scratch_);
+  for (auto& [name, f] : vectors_) apply_order(f.values, order, permute_scratch_);
+}
+
+void Particles::snapshot_into(Particles& into) const {
+  into.position = position;
+  into.velocity = velocity;
+  into.mass = mass;
+  into.type = type;
+  into.material = material;
+  into.id = id;
+  into.body = body;
+  into.boundary_volume = boundary_volume;
+  for (const auto& [name, f] : scalars_)
+    if (f.exported) into.scalars_[name] = f;
+  for (const auto& [name, f] : vectors_)
+    if (f.exported) into.vectors_[name] = f;
+  into.next_id_ = next_id_;
+}
+
+}  // namespace upf

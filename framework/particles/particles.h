@@ -1,0 +1,77 @@
+// Particles: the world's particles as a structure of arrays.
+//
+// Built-in arrays hold what every solver needs; a solver adds the fields it needs by name
+// ("pcisph.pressure"), so a plug-in needs no change here and writers can export any field.
+// Every particle has a stable id that survives reordering; exports carry it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "framework/core/particle_type.h"
+#include "framework/core/vec3.h"
+
+namespace upf {
+
+using ParticleId = std::uint32_t;
+using MaterialId = std::uint16_t;
+using BodyId = std::int32_t;
+inline constexpr BodyId kNoBody = -1;
+
+// A named per-particle field. `exported` fields go into frames and into the last-good snapshot.
+template <class T>
+struct Field {
+  std::vector<T> values;
+  bool exported = false;
+};
+
+class Particles {
+ public:
+  // Built-in arrays, all of size size().
+  std::vector<Vec3> position;
+  std::vector<Vec3> velocity;
+  std::vector<Real> mass;
+  std::vector<ParticleType> type;
+  std::vector<MaterialId> material;
+  std::vector<ParticleId> id;
+  std::vector<BodyId> body;
+  // Akinci et al. 2012 boundary volume V_b = 1 / sum_k W_bk (zero for non-boundary particles).
+  std::vector<Real> boundary_volume;
+
+  std::size_t size() const { return position.size(); }
+  std::size_t count(ParticleType t) const;
+
+  // Appends a particle and gives it the next stable id. Returns its index.
+  std::size_t add(const Vec3& x, const Vec3& v, Real m, ParticleType t, MaterialId mat,
+                  BodyId b = kNoBody);
+  void reserve(std::size_t n);
+
+  // Named fields: created on first request (filled with `init`), found afterwards.
+  std::vector<Real>& scalar_field(const std::string& name, Real init = 0, bool exported = false);
+  std::vector<Vec3>& vector_field(const std::string& name, Vec3 init = {}, bool exported = false);
+  const std::vector<Real>* find_scalar(const std::string& name) const;
+  const std::vector<Vec3>* find_vector(const std::string& name) const;
+  const std::map<std::string, Field<Real>>& scalar_fields() const { return scalars_; }
+  const std::map<std::string, Field<Vec3>>& vector_fields() const { return vectors_; }
+
+  // Reorders every array: new[i] = old[order[i]]. `order` must be a permutation of size().
+  void permute(const std::vector<std::uint32_t>& order);
+
+  // Copies positions, velocities and exported fields into `into` (reusing its storage), so the
+  // last good state can be written after an instability.
+  void snapshot_into(Particles& into) const;
+
+  // Largest stable id handed out so far plus one.
+  ParticleId id_bound() const { return next_id_; }
+
+ private:
+  std::map<std::string, Field<Real>> scalars_;
+  std::map<std::string, Field<Vec3>> vectors_;
+  ParticleId next_id_ = 0;
+  std::vector<std::uint8_t> permute_scratch_;
+};
+
+}  // namespace upf

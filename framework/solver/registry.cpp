@@ -1,0 +1,30 @@
+#include "framework/solver/registry.h"
+
+#include <stdexcept>
+
+namespace upf {
+
+void Registry::add_solver(SolverInfo info) {
+  if (find_solver(info.name)) throw std::logic_error("solver '" + info.name + "' registered twice");
+  solvers_.push_back(std::move(info));
+}
+
+void Registry::add_material_kind(MaterialKind kind) {
+  if (find_material_kind(kind.name))
+    throw std::logic_error("material kind '" + kind.name + "' registered twice");
+  kinds_.push_back(std::move(kind));
+}
+
+const SolverInfo* Registry::find_solver(const std::string& name) const {
+  for (const auto& s : solvers_)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+const MaterialKind* Registry::find_material_kind(const std::string& name) const {
+  for (const auto& k : kinds_)
+    if (k.name == name) return &k;
+  return nullptr;
+}
+
+}  // namespace upf

@@ -1,0 +1,44 @@
+// The registry: solvers and material kinds by name. An application builds one, registers the
+// built-in pieces and any plug-ins, and hands it to scene loading. No global registry exists:
+// several registries (and worlds) can live in one process.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/materials/material.h"
+#include "framework/params/param_spec.h"
+#include "framework/solver/solver.h"
+
+namespace upf {
+
+struct SolverInfo {
+  std::string name;  // as written in scene files: "pcisph"
+  ParticleType type = ParticleType::Liquid;
+  std::string summary;
+  std::string reference;  // the paper
+  std::vector<ParamSpec> params;
+  // Creates the solver that moves the particles of `materials` with parameters `values`.
+  std::function<std::unique_ptr<Solver>(const ParamValues& values,
+                                        std::vector<MaterialId> materials)>
+      create;
+};
+
+class Registry {
+ public:
+  void add_solver(SolverInfo info);
+  void add_material_kind(MaterialKind kind);
+
+  const SolverInfo* find_solver(const std::string& name) const;
+  const MaterialKind* find_material_kind(const std::string& name) const;
+  const std::vector<SolverInfo>& solvers() const { return solvers_; }
+  const std::vector<MaterialKind>& material_kinds() const { return kinds_; }
+
+ private:
+  std::vector<SolverInfo> solvers_;
+  std::vector<MaterialKind> kinds_;
+};
+
+}  // namespace upf

@@ -1,0 +1,118 @@
+#include "framework/world/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "framework/boundary/akinci_volume.h"
+#include "framework/core/errors.h"
+#include "framework/core/stopwatch.h"
+
+namespace upf {
+
+World::World(WorldSettings settings, int threads)
+    : settings_(settings), executor_(threads), grid_(settings.support_radius()) {}
+
+void World::add_solver(std::unique_ptr<Solver> solver) { solvers_.push_back(std::move(solver)); }
+
+int World::request_neighbours(TypeMask query, TypeMask target) {
+  for (std::size_t i = 0; i < lists_.size(); ++i)
+    if (lists_[i].query == query && lists_[i].target == target) return int(i);
+  lists_.push_back({query, target, {}});
+  if (prepared_) {
+    grid_.build(particles_, executor_);
+    grid_.find_neighbours(particles_, query, target, settings_.support_radius(), executor_,
+                          lists_.back().list);
+  }
+  return int(lists_.size() - 1);
+}
+
+void World::prepare() {
+  // Frozen particles never move, so their volumes are computed once, here.
+  grid_.build(particles_, executor_);
+  NeighbourList frozen;
+  const TypeMask frozen_mask = mask_of(ParticleType::Frozen);
+  grid_.find_neighbours(particles_, frozen_mask, frozen_mask, settings_.support_radius(),
+                        executor_, frozen);
+  compute_boundary_volumes(particles_, frozen_mask, frozen, kernel(), executor_);
+
+  for (auto& s : solvers_) s->prepare(*this);
+  prepared_ = true;
+  update_neighbours();
+}
+
+double World::next_time_step() const {
+  const auto& t = settings_.time;
+  if (t.fixed_dt > 0) return t.fixed_dt;
+  double dt = t.dt_max;
+  for (const auto& s : solvers_) dt = std::min(dt, double(s->max_time_step(*this)));
+  return std::clamp(dt, t.dt_min, t.dt_max);
+}
+
+void World::update_neighbours() {
+  grid_.build(particles_, executor_);
+  for (auto& r : lists_)
+    grid_.find_neighbours(particles_, r.query, r.target, settings_.support_radius(), executor_,
+                          r.list);
+}
+
+void World::step(double dt) {
+  if (!prepared_) throw std::logic_error("World::prepare() must run before World::step()");
+  Stopwatch total;
+  particles_.snapshot_into(last_good_);
+
+  Stopwatch neighbours;
+  // Reordering by the grid's (cell, id) order keeps neighbours close in memory. Lists depend on
+  // positions and ids only, so the results are the same bits with or without it.
+  if (settings_.reorder_every > 0 && step_count_ % std::uint64_t(settings_.reorder_every) == 0) {
+    grid_.build(particles_, executor_);
+    particles_.permute(grid_.sorted_order());
+  }
+  update_neighbours();
+  report_ = StepReport{};
+  report_.dt = dt;
+  report_.neighbour_ms = neighbours.elapsed_ms();
+
+  for (auto& s : solvers_) {
+    s->step(*this, Real(dt));
+    const SolverStats st = s->stats();
+    report_.solver.iterations = std::max(report_.solver.iterations, st.iterations);
+    report_.solver.avg_density_error =
+        std::max(report_.solver.avg_density_error, st.avg_density_error);
+    report_.solver.max_density_error =
+        std::max(report_.solver.max_density_error, st.max_density_error);
+    report_.solver.stage_ms.insert(report_.solver.stage_ms.end(), st.stage_ms.begin(),
+                                   st.stage_ms.end());
+  }
+  time_ += dt;
+  ++step_count_;
+  report_.total_ms = total.elapsed_ms();
+  check_stability();
+}
+
+void World::check_stability() const {
+  // The first bad particle in id order, so the report is the same for any thread count.
+  const std::size_t n = particles_.size();
+  const double limit2 = settings_.max_speed * settings_.max_speed;
+  std::size_t bad = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& v = particles_.velocity[i];
+    const bool broken = !is_finite(particles_.position[i]) || !is_finite(v) ||
+                        double(squared_norm(v)) > limit2;
+    if (broken && (bad == n || particles_.id[i] < particles_.id[bad])) bad = i;
+  }
+  if (bad == n) return;
+  const Vec3& x = particles_.position[bad];
+  const Vec3& v = particles_.velocity[bad];
+  if (!is_finite(x))
+    throw InstabilityError(step_count_, time_, particles_.id[bad], "position (not finite)",
+                           double(x.x + x.y + x.z), 0);
+  if (!is_finite(v))
+    throw InstabilityError(step_count_, time_, particles_.id[bad], "velocity (not finite)",
+                           double(v.x + v.y + v.z), 0);
+  throw InstabilityError(step_count_, time_, particles_.id[bad], "speed [m/s]",
+                         std::sqrt(double(squared_norm(v))), settings_.max_speed);
+}
+
+}  // namespace upf

@@ -1,0 +1,90 @@
+// The world: particles, materials, the neighbour grid and the solvers, stepped together.
+//
+// World::step(dt) (DESIGN.md, "One step"):
+//   1 (rigid particles follow their bodies: with the rigid-body issue)
+//   2 neighbour grid update and the neighbour lists solvers asked for; reorder every K steps
+//   3 each solver advances its own particles
+//   4 (per-body force sums to Bullet: with the rigid-body issue)
+//   5 time += dt; stability check (NaN, runaway speed)
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "framework/executors/cpu/cpu_executor.h"
+#include "framework/kernels/cubic_spline.h"
+#include "framework/materials/material.h"
+#include "framework/neighbours/neighbour_grid.h"
+#include "framework/particles/particles.h"
+#include "framework/solver/solver.h"
+#include "framework/world/world_settings.h"
+
+namespace upf {
+
+// What one step did, for metrics.
+struct StepReport {
+  double dt = 0;
+  double neighbour_ms = 0;
+  double total_ms = 0;
+  SolverStats solver;  // merged over solvers: max iterations, max errors, stages concatenated
+};
+
+class World {
+ public:
+  World(WorldSettings settings, int threads);
+
+  Particles& particles() { return particles_; }
+  const Particles& particles() const { return particles_; }
+  MaterialTable& materials() { return materials_; }
+  const MaterialTable& materials() const { return materials_; }
+  const WorldSettings& settings() const { return settings_; }
+  const CpuExecutor& executor() const { return executor_; }
+  CubicSplineKernel kernel() const { return CubicSplineKernel(settings_.support_radius()); }
+
+  void add_solver(std::unique_ptr<Solver> solver);
+  const std::vector<std::unique_ptr<Solver>>& solvers() const { return solvers_; }
+
+  // Asks for neighbour lists (query types -> target types within the support radius), rebuilt
+  // every step. Call from Solver::prepare; returns a handle for neighbours().
+  int request_neighbours(TypeMask query, TypeMask target);
+  const NeighbourList& neighbours(int handle) const { return lists_.at(std::size_t(handle)).list; }
+  const NeighbourGrid& grid() const { return grid_; }
+
+  // Boundary volumes (Akinci et al. 2012), then every solver's prepare.
+  void prepare();
+
+  // The next step size: the fixed dt, or the minimum over solvers clamped to [dt_min, dt_max].
+  double next_time_step() const;
+  // Advances by dt. Throws InstabilityError (with the last good state kept) when it blows up.
+  void step(double dt);
+
+  double time() const { return time_; }
+  std::uint64_t step_count() const { return step_count_; }
+  const StepReport& last_step() const { return report_; }
+  // The state before the last step: what to write when that step went unstable.
+  const Particles& last_good() const { return last_good_; }
+
+ private:
+  struct ListRequest {
+    TypeMask query, target;
+    NeighbourList list;
+  };
+  void update_neighbours();
+  void check_stability() const;
+
+  WorldSettings settings_;
+  CpuExecutor executor_;
+  Particles particles_;
+  Particles last_good_;
+  MaterialTable materials_;
+  NeighbourGrid grid_;
+  std::vector<ListRequest> lists_;
+  std::vector<std::unique_ptr<Solver>> solvers_;
+  double time_ = 0;
+  std::uint64_t step_count_ = 0;
+  bool prepared_ = false;
+  StepReport report_;
+};
+
+}  // namespace upf

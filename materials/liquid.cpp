@@ -1,0 +1,22 @@
+#include "materials/liquid.h"
+
+namespace upf {
+
+MaterialKind liquid_material_kind() {
+  return {
+      "liquid",
+      ParticleType::Liquid,
+      "a fluid moved by an SPH-family solver (pcisph by default)",
+      {
+          {"density", "kg/m^3", 1000, 1, 1e5, "rest density rho0"},
+          {"viscosity", "m^2/s", 1e-3, 0, 10,
+           "kinematic viscosity nu of the shared Laplacian viscosity (Monaghan 2005); also "
+           "damps the flow, so it is larger than water's 1e-6 at coarse resolution"},
+          {"boundary_viscosity", "m^2/s", 0, 0, 10,
+           "kinematic viscosity against boundary particles (wall friction)"},
+      },
+      "pcisph",
+  };
+}
+
+}  // namespace upf

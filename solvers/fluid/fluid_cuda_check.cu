@@ -1,0 +1,16 @@
+// Compiles the fluid solvers' per-particle functions with nvcc (DESIGN.md, "Executors"): the
+// same source the CPU executor runs must stay device-clean until the CUDA executor launches it.
+#include "solvers/fluid/fluid_forces.h"
+#include "solvers/pcisph/pcisph_kernels.h"
+
+namespace upf::cuda {
+
+__global__ void fluid_compile_check(FluidView f, const Real* density, const Real* pressure,
+                                    Vec3* out, std::uint32_t n) {
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= n) return;
+  out[i] = viscosity_acceleration(f, density, i) + pcisph_pressure_acceleration(f, pressure, i);
+  out[i].x += fluid_density(f, f.x, i);
+}
+
+}  // namespace upf::cuda

@@ -1,0 +1,65 @@
+// Per-particle pieces shared by every fluid solver, so that comparing solvers isolates the
+// pressure solver.
+//
+// Density: SPH summation over fluid neighbours plus the boundary term of Akinci et al. 2012,
+//   rho_i = sum_j m_j W_ij + sum_b Psi_b W_ib,  Psi_b = rho0_i V_b.
+// Viscosity: the Laplacian approximation of Monaghan 2005 ("Smoothed particle hydrodynamics",
+//   Rep. Prog. Phys. 68, eq. 6.1 form used with a kinematic viscosity nu):
+//   a_i = 2 (d + 2) nu sum_j (m_j / rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 H^2) grad W_ij,
+//   and the same against boundary particles (at rest) with Psi_b / rho_i and nu_boundary.
+#pragma once
+
+#include "solvers/fluid/fluid_view.h"
+
+namespace upf {
+
+// Density of fluid particle i, with fluid positions taken from `xf` (current or predicted).
+UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32_t i) {
+  const Vec3 xi = xf[i];
+  Real rho = f.mass[i] * f.kernel.value(Real(0));
+  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+    const std::uint32_t j = f.fluid.indices[k];
+    rho += f.mass[j] * f.kernel.value(xi - xf[j]);
+  }
+  const Real rho0 = f.rest_density[f.material[i]];
+  for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
+    const std::uint32_t b = f.boundary.indices[k];
+    rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - f.x[b]);
+  }
+  return rho;
+}
+
+UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* density,
+                                          std::uint32_t i) {
+  const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
+  const Vec3 xi = f.x[i];
+  const Vec3 vi = f.v[i];
+  Vec3 a{};
+  const Real nu = f.viscosity[f.material[i]];
+  if (nu > 0) {
+    for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+      const std::uint32_t j = f.fluid.indices[k];
+      const Vec3 xij = xi - f.x[j];
+      const Real vx = dot(vi - f.v[j], xij);
+      a += f.kernel.gradient(xij) *
+           (f.mass[j] / density[j] * vx / (squared_norm(xij) + Real(0.01) * h2));
+    }
+    a *= Real(10) * nu;
+  }
+  const Real nub = f.boundary_viscosity[f.material[i]];
+  if (nub > 0) {
+    const Real rho0 = f.rest_density[f.material[i]];
+    Vec3 ab{};
+    for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
+      const std::uint32_t b = f.boundary.indices[k];
+      const Vec3 xib = xi - f.x[b];
+      const Real vx = dot(vi - f.v[b], xib);
+      ab += f.kernel.gradient(xib) * (rho0 * f.boundary_volume[b] / density[i] * vx /
+                                      (squared_norm(xib) + Real(0.01) * h2));
+    }
+    a += ab * (Real(10) * nub);
+  }
+  return a;
+}
+
+}  // namespace upf

@@ -1,0 +1,34 @@
+#include "solvers/fluid/fluid_time_step.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "framework/world/world.h"
+
+namespace upf {
+
+Real max_liquid_speed_squared(const Particles& particles, const CpuExecutor& exec) {
+  const std::int64_t n = std::int64_t(particles.size());
+  const Vec3* v = particles.velocity.data();
+  const ParticleType* t = particles.type.data();
+  Real vmax2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : vmax2) num_threads(exec.threads())
+  for (std::int64_t i = 0; i < n; ++i)
+    if (t[i] == ParticleType::Liquid) vmax2 = std::max(vmax2, squared_norm(v[i]));
+  return vmax2;
+}
+
+Real fluid_cfl_time_step(const World& world, Real max_viscosity) {
+  const auto& s = world.settings();
+  Real dt = std::numeric_limits<Real>::max();
+  const Real vmax = std::sqrt(max_liquid_speed_squared(world.particles(), world.executor()));
+  if (vmax > 0) dt = Real(s.time.cfl) * s.spacing / vmax;
+  if (max_viscosity > 0) {
+    const Real h = s.support_radius();
+    dt = std::min(dt, Real(0.125) * h * h / max_viscosity);
+  }
+  return dt;
+}
+
+}  // namespace upf

@@ -1,0 +1,33 @@
+// The per-particle functions of PCISPH (Solenthaler & Pajarola 2009), written once for host and
+// device: the pressure acceleration and the predicted state.
+#pragma once
+
+#include "solvers/fluid/fluid_view.h"
+
+namespace upf {
+
+// Pressure acceleration of fluid particle i at the current positions, with the paper's symmetric
+// form and rest densities in the denominators (as in the derivation of delta):
+//   a_i = -sum_j m_j (p_i/rho0_i^2 + p_j/rho0_j^2) grad W_ij
+//         -sum_b Psi_b (2 p_i/rho0_i^2) grad W_ib       (Akinci 2012, mirrored pressure)
+UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* pressure,
+                                                std::uint32_t i) {
+  const Real rho0 = f.rest_density[f.material[i]];
+  const Real pi = pressure[i] / (rho0 * rho0);
+  const Vec3 xi = f.x[i];
+  Vec3 a{};
+  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+    const std::uint32_t j = f.fluid.indices[k];
+    const Real rho0j = f.rest_density[f.material[j]];
+    a -= f.kernel.gradient(xi - f.x[j]) * (f.mass[j] * (pi + pressure[j] / (rho0j * rho0j)));
+  }
+  if (pi > 0) {
+    for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
+      const std::uint32_t b = f.boundary.indices[k];
+      a -= f.kernel.gradient(xi - f.x[b]) * (rho0 * f.boundary_volume[b] * Real(2) * pi);
+    }
+  }
+  return a;
+}
+
+}  // namespace upf

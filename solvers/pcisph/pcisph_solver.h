@@ -1,0 +1,48 @@
+// PCISPH: Solenthaler & Pajarola 2009, "Predictive-Corrective Incompressible SPH"
+// (ACM TOG 28(3), SIGGRAPH 2009).
+//
+// Each step predicts velocities and positions under the current pressure forces, measures the
+// predicted density error and raises pressures by delta * error until the average compression is
+// below eta (at least min_iterations, at most max_iterations). delta is the paper's scaling factor
+//   delta = -1 / (beta (-sum grad W . sum grad W - sum grad W . grad W)),  beta = 2 (dt m / rho0)^2,
+// with the sums over a full template neighbourhood on the initial lattice; it scales as 1/dt^2, so
+// the template sum is taken once and delta follows every change of dt. Only compression is
+// corrected: pressures stay >= 0. Boundaries follow Akinci et al. 2012 (shared with every fluid
+// solver); non-pressure forces are gravity and the shared viscosity.
+#pragma once
+
+#include <vector>
+
+#include "framework/params/param_spec.h"
+#include "framework/solver/solver.h"
+#include "solvers/fluid/fluid_view.h"
+
+namespace upf {
+
+class PcisphSolver final : public Solver {
+ public:
+  PcisphSolver(const ParamValues& params, std::vector<MaterialId> materials);
+
+  std::string_view name() const override { return "pcisph"; }
+  void prepare(World& world) override;
+  Real max_time_step(const World& world) const override;
+  void step(World& world, Real dt) override;
+  SolverStats stats() const override { return stats_; }
+
+  static std::vector<ParamSpec> param_specs();
+  // sum over the template neighbourhood of |grad W|^2 (the symmetric lattice makes sum grad W = 0
+  // up to round-off, kept anyway as in the paper). delta = delta_scale / dt^2.
+  static double template_delta_scale(Real spacing, const CubicSplineKernel& kernel);
+
+ private:
+  double eta_;
+  int min_iterations_, max_iterations_;
+  std::vector<MaterialId> materials_;
+  FluidMaterialTable table_;
+  FluidNeighbourHandles lists_;
+  double delta_scale_ = 0;  // [kg^2/m^6 ... ] delta = delta_scale_ / dt^2 (per unit mass ratio)
+  Real max_viscosity_ = 0;
+  SolverStats stats_;
+};
+
+}  // namespace upf
