@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <omp.h>
+
 #include "framework/neighbours/morton.h"
 
 namespace upf {
@@ -58,16 +60,20 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
 
   cell_keys_.clear();
   cell_begin_.clear();
-  cell_of_.resize(n);
   for (std::size_t s = 0; s < n; ++s) {
     const std::uint64_t k = keys_[sorted_[s]];
     if (cell_keys_.empty() || cell_keys_.back() != k) {
       cell_keys_.push_back(k);
       cell_begin_.push_back(std::uint32_t(s));
     }
-    cell_of_[sorted_[s]] = std::uint32_t(cell_keys_.size() - 1);
   }
   cell_begin_.push_back(std::uint32_t(n));
+  sorted_x_.resize(n);
+  sorted_type_.resize(n);
+  exec.for_each(n, [&](std::size_t s) {
+    sorted_x_[s] = x[sorted_[s]];
+    sorted_type_[s] = particles.type[sorted_[s]];
+  });
 }
 
 // LSD radix sort of sorted_ by keys_, 8 bits a pass; passes whose digit is the same for every
@@ -124,51 +130,88 @@ int NeighbourGrid::neighbour_cells(std::size_t cell, CellRange ranges[27]) const
 void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query, TypeMask target,
                                     Real radius, const CpuExecutor& exec,
                                     NeighbourList& out) const {
+  find_neighbours(particles, query, std::vector<TypeMask>{target}, radius, exec,
+                  std::vector<NeighbourList*>{&out});
+}
+
+void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
+                                    const std::vector<TypeMask>& targets, Real radius,
+                                    const CpuExecutor& exec,
+                                    const std::vector<NeighbourList*>& outs) const {
   const std::size_t n = particles.size();
-  const Vec3* x = particles.position.data();
-  const ParticleType* type = particles.type.data();
+  const std::size_t lists = targets.size();
   const Real r2 = radius * radius;
-  out.offsets.assign(n + 1, 0);
+  TypeMask any_target = 0;
+  for (TypeMask t : targets) any_target |= t;
 
-  // Pass 1 counts, pass 2 fills. A particle's neighbours are all found by one thread in one
-  // go, so it writes only its own slots, in a fixed order.
-  auto visit = [&](auto&& per_particle) {
-    exec.for_each_dynamic(cell_keys_.size(), [&](std::size_t cell) {
-      bool any_query = false;
-      for (std::uint32_t s = cell_begin_[cell]; s < cell_begin_[cell + 1]; ++s)
-        any_query = any_query || in_mask(query, type[sorted_[s]]);
-      if (!any_query) return;
-      CellRange ranges[27];
-      const int found = neighbour_cells(cell, ranges);
-      for (std::uint32_t s = cell_begin_[cell]; s < cell_begin_[cell + 1]; ++s) {
-        const std::uint32_t i = sorted_[s];
-        if (!in_mask(query, type[i])) continue;
-        const Vec3 xi = x[i];
-        per_particle(i, [&](auto&& emit) {
-          for (int c = 0; c < found; ++c)
-            for (std::uint32_t t = ranges[c].begin; t < ranges[c].end; ++t) {
-              const std::uint32_t j = sorted_[t];
-              if (j == i || !in_mask(target, type[j])) continue;
-              if (squared_norm(xi - x[j]) < r2) emit(j);
-            }
-        });
-      }
-    });
+  // One pass: each thread appends its particles' neighbours to its own buffers and records where
+  // they are; the final CSR arrays are then assembled by copying. A particle's neighbours are
+  // found by one thread in a fixed order, so the result does not depend on the thread count.
+  struct Segment {
+    std::uint32_t particle, begin;
   };
+  const int threads = exec.threads();
+  std::vector<std::vector<std::vector<std::uint32_t>>> buffers(
+      static_cast<std::size_t>(threads), std::vector<std::vector<std::uint32_t>>(lists));
+  std::vector<std::vector<Segment>> segments(std::size_t(threads) * lists);
+  for (NeighbourList* out : outs) out->offsets.assign(n + 1, 0);
 
-  std::uint32_t* offsets = out.offsets.data();
-  visit([&](std::uint32_t i, auto&& each) {
-    std::uint32_t k = 0;
-    each([&](std::uint32_t) { ++k; });
-    offsets[i + 1] = k;
-  });
-  for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
-  out.indices.resize(offsets[n]);
-  std::uint32_t* indices = out.indices.data();
-  visit([&](std::uint32_t i, auto&& each) {
-    std::uint32_t* slot = indices + offsets[i];
-    each([&](std::uint32_t j) { *slot++ = j; });
-  });
+  const std::int64_t cells = std::int64_t(cell_keys_.size());
+#pragma omp parallel num_threads(threads)
+  {
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    auto& my_buffers = buffers[t];
+#pragma omp for schedule(dynamic, 32)
+    for (std::int64_t cell = 0; cell < cells; ++cell) {
+      const std::uint32_t first = cell_begin_[std::size_t(cell)];
+      const std::uint32_t last = cell_begin_[std::size_t(cell) + 1];
+      bool any_query = false;
+      for (std::uint32_t s = first; s < last; ++s)
+        any_query = any_query || in_mask(query, sorted_type_[s]);
+      if (!any_query) continue;
+      CellRange ranges[27];
+      const int found = neighbour_cells(std::size_t(cell), ranges);
+      for (std::uint32_t s = first; s < last; ++s) {
+        if (!in_mask(query, sorted_type_[s])) continue;
+        const std::uint32_t i = sorted_[s];
+        for (std::size_t l = 0; l < lists; ++l)
+          segments[t * lists + l].push_back({i, std::uint32_t(my_buffers[l].size())});
+        const Vec3 xi = sorted_x_[s];
+        for (int c = 0; c < found; ++c)
+          for (std::uint32_t u = ranges[c].begin; u < ranges[c].end; ++u) {
+            const ParticleType tj = sorted_type_[u];
+            if (u == s || !in_mask(any_target, tj)) continue;
+            if (!(squared_norm(xi - sorted_x_[u]) < r2)) continue;
+            for (std::size_t l = 0; l < lists; ++l)
+              if (in_mask(targets[l], tj)) my_buffers[l].push_back(sorted_[u]);
+          }
+      }
+    }
+  }
+
+  for (std::size_t l = 0; l < lists; ++l) {
+    std::uint32_t* offsets = outs[l]->offsets.data();
+    for (int t = 0; t < threads; ++t) {
+      const auto& seg = segments[std::size_t(t) * lists + l];
+      const auto& buf = buffers[std::size_t(t)][l];
+      for (std::size_t k = 0; k < seg.size(); ++k) {
+        const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : std::uint32_t(buf.size());
+        offsets[seg[k].particle + 1] = end - seg[k].begin;
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
+    outs[l]->indices.resize(offsets[n]);
+    std::uint32_t* indices = outs[l]->indices.data();
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int t = 0; t < threads; ++t) {
+      const auto& seg = segments[std::size_t(t) * lists + l];
+      const auto& buf = buffers[std::size_t(t)][l];
+      for (std::size_t k = 0; k < seg.size(); ++k) {
+        const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : std::uint32_t(buf.size());
+        std::copy(buf.begin() + seg[k].begin, buf.begin() + end, indices + offsets[seg[k].particle]);
+      }
+    }
+  }
 }
 
 }  // namespace upf

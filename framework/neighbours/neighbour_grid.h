@@ -35,6 +35,12 @@ class NeighbourGrid {
   void find_neighbours(const Particles& particles, TypeMask query, TypeMask target, Real radius,
                        const CpuExecutor& exec, NeighbourList& out) const;
 
+  // The same for several target sets at once (one list each), in one scan of the candidates:
+  // what the world does every step for (liquid -> liquid, liquid -> boundary).
+  void find_neighbours(const Particles& particles, TypeMask query,
+                       const std::vector<TypeMask>& targets, Real radius, const CpuExecutor& exec,
+                       const std::vector<NeighbourList*>& outs) const;
+
  private:
   struct CellRange {
     std::uint32_t begin, end;
@@ -52,7 +58,9 @@ class NeighbourGrid {
   std::vector<std::uint32_t> sort_scratch_;
   std::vector<std::uint64_t> cell_keys_;   // distinct keys, ascending
   std::vector<std::uint32_t> cell_begin_;  // into sorted_, size cell_count()+1
-  std::vector<std::uint32_t> cell_of_;     // per particle: its cell index
+  // Positions and types gathered in sorted order, so candidate scans read contiguous memory.
+  std::vector<Vec3> sorted_x_;
+  std::vector<ParticleType> sorted_type_;
 };
 
 }  // namespace upf

@@ -52,9 +52,21 @@ double World::next_time_step() const {
 
 void World::update_neighbours() {
   grid_.build(particles_, executor_);
-  for (auto& r : lists_)
-    grid_.find_neighbours(particles_, r.query, r.target, settings_.support_radius(), executor_,
-                          r.list);
+  // Requests that share a query set share one scan of the candidates.
+  std::vector<bool> done(lists_.size(), false);
+  for (std::size_t a = 0; a < lists_.size(); ++a) {
+    if (done[a]) continue;
+    std::vector<TypeMask> targets;
+    std::vector<NeighbourList*> outs;
+    for (std::size_t b = a; b < lists_.size(); ++b) {
+      if (done[b] || lists_[b].query != lists_[a].query) continue;
+      done[b] = true;
+      targets.push_back(lists_[b].target);
+      outs.push_back(&lists_[b].list);
+    }
+    grid_.find_neighbours(particles_, lists_[a].query, targets, settings_.support_radius(),
+                          executor_, outs);
+  }
 }
 
 void World::step(double dt) {

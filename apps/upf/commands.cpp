@@ -1,0 +1,97 @@
+#include "commands.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "framework/core/errors.h"
+#include "framework/run/simulation_run.h"
+#include "framework/scene/scene_reader.h"
+#include "framework/solver/registry.h"
+#include "progress.h"
+#include "solvers/register_builtin_solvers.h"
+
+namespace upf::app {
+
+namespace {
+Registry builtin_registry() {
+  Registry registry;
+  register_builtins(registry);
+  return registry;
+}
+
+void print_params(const std::vector<ParamSpec>& specs) {
+  for (const auto& p : specs) {
+    std::printf("      %-20s %-8s default %-10g range [%g, %g]%s\n        %s\n", p.name.c_str(),
+                p.unit.c_str(), p.default_value, p.min_value, p.max_value,
+                p.integer ? " (whole number)" : "", p.description.c_str());
+  }
+}
+}  // namespace
+
+int run_command(const RunArgs& args) {
+  const Registry registry = builtin_registry();
+  const SceneDescription scene = load_scene_file(args.scene, registry);
+  RunOptions options;
+  options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / scene.name
+                                         : std::filesystem::path(args.out_dir);
+  options.threads = args.threads;
+  options.end_time = args.end_time;
+  options.write_frames = !args.no_frames;
+  ProgressReporter progress(stderr);
+  if (!args.quiet) options.on_progress = [&](const RunProgress& p) { progress.update(p); };
+  RunResult r;
+  try {
+    r = run_simulation(scene, registry, options);
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+  progress.finish();
+  std::printf("%s: %llu steps, %.3f s simulated in %.2f s wall, %zu liquid particles, "
+              "%.3g fluid particle-steps/s, mean %.2f pressure iterations\n",
+              scene.name.c_str(), static_cast<unsigned long long>(r.steps), r.simulated_time,
+              r.wall_seconds, r.liquid_particles, r.fluid_particle_steps_per_second,
+              r.mean_iterations);
+  std::printf("output: %s (particles.pvd, metrics.csv, probes.csv, summary.json)\n",
+              options.out_dir.string().c_str());
+  return 0;
+}
+
+int validate_command(const std::vector<std::string>& files) {
+  const Registry registry = builtin_registry();
+  int bad = 0;
+  for (const auto& f : files) {
+    try {
+      const SceneDescription scene = load_scene_file(f, registry);
+      std::printf("%s: ok (%.0f particles)\n", f.c_str(), scene.estimated_particles());
+    } catch (const InputError& e) {
+      ++bad;
+      std::fprintf(stderr, "%s: %zu problem%s\n", f.c_str(), e.problems().size(),
+                   e.problems().size() == 1 ? "" : "s");
+      for (const auto& p : e.problems())
+        std::fprintf(stderr, "  %s: %s\n", p.where.c_str(), p.message.c_str());
+    }
+  }
+  return bad ? static_cast<int>(ExitCode::BadInput) : 0;
+}
+
+int info_command() {
+  const Registry registry = builtin_registry();
+  std::printf("Material types (scene key materials/NAME/type):\n");
+  for (const auto& k : registry.material_kinds()) {
+    std::printf("  %s (particle type %s)%s%s\n    %s\n", k.name.c_str(),
+                std::string(to_string(k.type)).c_str(),
+                k.default_solver.empty() ? "" : ", default solver ", k.default_solver.c_str(),
+                k.summary.c_str());
+    if (!k.params.empty()) print_params(k.params);
+  }
+  std::printf("\nSolvers (scene key materials/NAME/solver):\n");
+  for (const auto& s : registry.solvers()) {
+    std::printf("  %s (for %s materials)\n    %s\n    reference: %s\n", s.name.c_str(),
+                std::string(to_string(s.type)).c_str(), s.summary.c_str(), s.reference.c_str());
+    print_params(s.params);
+  }
+  return 0;
+}
+
+}  // namespace upf::app

@@ -1,0 +1,56 @@
+// ParaView .pvd collection writer. Format: VTK XML file format documentation,
+// https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html
+#include "framework/output/pvd_series.h"
+
+#include <charconv>
+#include <ostream>
+#include <string>
+#include <system_error>
+#include <utility>
+
+#include "framework/output/atomic_file.h"
+#include "framework/output/vtp_writer.h"  // xml_escape
+
+namespace upf {
+
+namespace {
+
+// Shortest text that reads back as the same double, independent of any locale.
+std::string format_time(double t) {
+  char buf[64];
+  const auto result = std::to_chars(buf, buf + sizeof(buf), t);
+  return result.ec == std::errc() ? std::string(buf, result.ptr) : std::string("0");
+}
+
+}  // namespace
+
+PvdSeries::PvdSeries(std::filesystem::path pvd_path) : path_(std::move(pvd_path)) {}
+
+void PvdSeries::add(double time, const std::string& relative_file) {
+  entries_.push_back({time, relative_file});
+  try {
+    write();
+  } catch (...) {
+    // Keep memory and disk in agreement: the caller sees the failure and the entry is not kept.
+    entries_.pop_back();
+    throw;
+  }
+}
+
+void PvdSeries::write() const {
+  std::string xml;
+  xml += "<?xml version=\"1.0\"?>\n";
+  xml += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
+  xml += "  <Collection>\n";
+  for (const Entry& e : entries_) {
+    xml += "    <DataSet timestep=\"" + format_time(e.time) + "\" group=\"\" part=\"0\" file=\"" +
+           xml_escape(e.file) + "\"/>\n";
+  }
+  xml += "  </Collection>\n";
+  xml += "</VTKFile>\n";
+  write_file_atomically(path_, [&](std::ostream& out) {
+    out.write(xml.data(), static_cast<std::streamsize>(xml.size()));
+  });
+}
+
+}  // namespace upf

@@ -1,0 +1,30 @@
+// Writes the particles as a VTK XML PolyData file (.vtp) for ParaView and VisIt.
+//
+// One vertex per particle, binary data in a raw appended block with 64-bit size headers, so a
+// frame costs little more than a memory copy to write. Format: VTK XML file format documentation,
+// https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html (PolyData, appended
+// data, header_type).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/particles/particles.h"
+
+namespace upf {
+
+// Writes `particles` to `path` atomically (see write_file_atomically). Point data always holds
+// "id" (UInt32), "type" (UInt8), "material" (UInt16) and "velocity" (3 components), then each
+// named field of `fields` in order, scalar or vector; names that match no field, or repeat one
+// already written, are skipped (the scene validator reports unknown names earlier). Positions and
+// real-valued fields are written as Float32, or Float64 when upf::Real is double. Throws
+// OutputError if the file cannot be written; the directory must exist.
+void write_vtp(const std::filesystem::path& path, const Particles& particles,
+               const std::vector<std::string>& fields);
+
+// Escapes `s` for use inside a double-quoted XML attribute (field names, file names).
+std::string xml_escape(std::string_view s);
+
+}  // namespace upf

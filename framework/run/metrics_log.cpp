@@ -1,0 +1,81 @@
+#include "framework/run/metrics_log.h"
+
+#include <cmath>
+
+#include "framework/core/deterministic_sum.h"
+#include "framework/core/errors.h"
+
+namespace upf {
+
+namespace {
+std::ofstream open_log(const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw OutputError("cannot write " + path.string());
+  out.precision(9);
+  return out;
+}
+
+void check(const std::ofstream& out, const std::filesystem::path& path) {
+  if (!out) throw OutputError("writing " + path.string() + " failed (disk full?)");
+}
+}  // namespace
+
+double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
+  return block_sum(exec, particles.size(), [&](std::size_t i) {
+    return 0.5 * double(particles.mass[i]) * double(squared_norm(particles.velocity[i]));
+  });
+}
+
+MetricsLog::MetricsLog(const std::filesystem::path& path) : path_(path), out_(open_log(path)) {}
+
+void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
+  if (m.step == 1 || stages_.empty()) {
+    if (stages_.empty()) {
+      for (const auto& [name, ms] : r.solver.stage_ms) stages_.push_back(name);
+      out_ << "step,t,dt,iterations,avg_density_error,max_density_error,kinetic_energy,"
+              "n_liquid,n_rigid,n_granular,n_frozen,neighbour_ms";
+      for (const auto& s : stages_) out_ << ',' << s << "_ms";
+      out_ << ",wall_ms\n";
+    }
+  }
+  out_ << m.step << ',' << m.time << ',' << r.dt << ',' << r.solver.iterations << ','
+       << r.solver.avg_density_error << ',' << r.solver.max_density_error << ','
+       << m.kinetic_energy;
+  for (std::size_t c : m.count_by_type) out_ << ',' << c;
+  out_ << ',' << r.neighbour_ms;
+  for (const auto& s : stages_) {
+    double ms = 0;
+    for (const auto& [name, v] : r.solver.stage_ms)
+      if (name == s) ms += v;
+    out_ << ',' << ms;
+  }
+  out_ << ',' << r.total_ms << '\n';
+}
+
+void MetricsLog::flush() {
+  out_.flush();
+  check(out_, path_);
+}
+
+ProbeLog::ProbeLog(const std::filesystem::path& path, const std::vector<std::string>& names)
+    : path_(path), out_(open_log(path)) {
+  out_ << 't';
+  for (const auto& n : names) out_ << ',' << n;
+  out_ << '\n';
+}
+
+void ProbeLog::add(double time, const std::vector<double>& values) {
+  out_ << time;
+  for (double v : values) {
+    if (std::isnan(v)) {
+      out_ << ",nan";
+    } else {
+      out_ << ',' << v;
+    }
+  }
+  out_ << '\n';
+  out_.flush();
+  check(out_, path_);
+}
+
+}  // namespace upf

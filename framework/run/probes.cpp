@@ -1,0 +1,69 @@
+#include "framework/run/probes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace upf {
+
+namespace {
+bool inside(const Box& box, const Vec3& x) {
+  for (int a = 0; a < 3; ++a)
+    if (double(x[a]) < box.min[a] || double(x[a]) > box.max[a]) return false;
+  return true;
+}
+}  // namespace
+
+double evaluate_probe(const ProbeDesc& probe, const Particles& particles, Real spacing) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t n = particles.size();
+  switch (probe.kind) {
+    case ProbeKind::Extent: {
+      double best = nan;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (particles.type[i] != ParticleType::Liquid) continue;
+        const Vec3& x = particles.position[i];
+        if (probe.region && !inside(*probe.region, x)) continue;
+        const double c = double(x[probe.axis]);
+        if (std::isnan(best) || (probe.max_side ? c > best : c < best)) best = c;
+      }
+      return best;
+    }
+    case ProbeKind::Height: {
+      const int u = (probe.axis + 1) % 3, w = (probe.axis + 2) % 3;
+      // `at` lists the other two coordinates in axis order.
+      const int first = std::min(u, w), second = std::max(u, w);
+      double top = nan;
+      const double r2 = probe.radius * probe.radius;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (particles.type[i] != ParticleType::Liquid) continue;
+        const Vec3& x = particles.position[i];
+        const double d0 = double(x[first]) - probe.at[0], d1 = double(x[second]) - probe.at[1];
+        if (d0 * d0 + d1 * d1 > r2) continue;
+        const double c = double(x[probe.axis]);
+        if (std::isnan(top) || c > top) top = c;
+      }
+      return std::isnan(top) ? nan : top + 0.5 * double(spacing);
+    }
+    case ProbeKind::Pressure: {
+      const std::vector<Real>* pressure = particles.find_scalar("pressure");
+      if (!pressure) return nan;
+      double sum = 0;
+      std::size_t count = 0;
+      const double r2 = probe.radius * probe.radius;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (particles.type[i] != ParticleType::Liquid) continue;
+        const Vec3& x = particles.position[i];
+        const Eigen::Vector3d d(double(x.x) - probe.center[0], double(x.y) - probe.center[1],
+                                double(x.z) - probe.center[2]);
+        if (d.squaredNorm() > r2) continue;
+        sum += double((*pressure)[i]);
+        ++count;
+      }
+      return count ? sum / double(count) : nan;
+    }
+  }
+  return nan;
+}
+
+}  // namespace upf

@@ -1,0 +1,17 @@
+// Probes: numbers measured on the liquid while a scene runs (written to probes.csv).
+//   extent    the largest (or smallest) coordinate of liquid along an axis, optionally only inside
+//             a region: the surge front of a dam break is the largest x near the floor.
+//   height    the liquid surface height along the up axis in a thin column at a point: the top
+//             particle centre plus half a spacing.
+//   pressure  the mean pressure of liquid particles inside a small sphere.
+// A probe that sees no liquid reports NaN (written as "nan").
+#pragma once
+
+#include "framework/particles/particles.h"
+#include "framework/scene/scene.h"
+
+namespace upf {
+
+double evaluate_probe(const ProbeDesc& probe, const Particles& particles, Real spacing);
+
+}  // namespace upf

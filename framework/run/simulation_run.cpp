@@ -1,0 +1,207 @@
+#include "framework/run/simulation_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "framework/core/errors.h"
+#include "framework/core/stopwatch.h"
+#include "framework/output/atomic_file.h"
+#include "framework/output/pvd_series.h"
+#include "framework/output/vtp_writer.h"
+#include "framework/run/metrics_log.h"
+#include "framework/run/probes.h"
+#include "framework/scene/scene_builder.h"
+
+namespace upf {
+
+namespace {
+
+// Writes frame files and keeps the .pvd series that ParaView opens as a time series.
+class FrameWriter {
+ public:
+  FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene, bool enabled)
+      : out_dir_(out_dir),
+        fields_(scene.output.fields),
+        enabled_(enabled && scene.output.vtp),
+        series_(out_dir / "particles.pvd") {
+    if (enabled_) ensure_directory(out_dir / "frames");
+  }
+
+  void write(const Particles& particles, double time) {
+    if (!enabled_) {
+      ++frames_;
+      return;
+    }
+    char name[64];
+    std::snprintf(name, sizeof name, "frames/frame_%05d.vtp", frames_);
+    write_vtp(out_dir_ / name, particles, fields_);
+    series_.add(time, name);
+    ++frames_;
+  }
+  int frames() const { return frames_; }
+
+ private:
+  std::filesystem::path out_dir_;
+  std::vector<std::string> fields_;
+  bool enabled_;
+  PvdSeries series_;
+  int frames_ = 0;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+void write_summary(const std::filesystem::path& path, const SceneDescription& scene,
+                   const RunResult& r, int threads, const std::vector<double>& step_ms,
+                   const std::vector<std::pair<std::string, std::vector<double>>>& stages) {
+  nlohmann::json j;
+  j["scene"] = scene.name;
+  j["source"] = scene.source.string();
+  j["status"] = r.status;
+  if (!r.failure.empty()) j["failure"] = r.failure;
+  j["threads"] = threads;
+  j["steps"] = r.steps;
+  j["simulated_time_s"] = r.simulated_time;
+  j["wall_time_s"] = r.wall_seconds;
+  j["particles"] = {{"liquid", r.liquid_particles}, {"total", r.total_particles}};
+  j["frames"] = r.frames;
+  j["mean_dt_s"] = r.mean_dt;
+  j["mean_pressure_iterations"] = r.mean_iterations;
+  j["max_pressure_iterations"] = r.max_iterations;
+  j["mean_avg_density_error"] = r.mean_avg_density_error;
+  j["max_density_error"] = r.max_density_error;
+  j["median_step_ms"] = median(step_ms);
+  nlohmann::json stage_json = nlohmann::json::object();
+  for (const auto& [name, values] : stages) stage_json[name] = median(values);
+  j["median_stage_ms"] = stage_json;
+  j["fluid_particle_steps_per_second"] = r.fluid_particle_steps_per_second;
+  j["wall_seconds_per_simulated_second"] =
+      r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0.0;
+  nlohmann::json probes = nlohmann::json::object();
+  for (const auto& [name, value] : r.final_probes)
+    probes[name] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+  j["final_probes"] = probes;
+  write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+}
+
+}  // namespace
+
+RunResult run_simulation(const SceneDescription& scene, const Registry& registry,
+                         const RunOptions& options) {
+  ensure_directory(options.out_dir);
+  auto world = build_world(scene, registry, options.threads);
+  world->prepare();
+  const Particles& particles = world->particles();
+  const double end = options.end_time.value_or(scene.world.time.end);
+  const Real spacing = scene.world.spacing;
+
+  RunResult result;
+  result.liquid_particles = particles.count(ParticleType::Liquid);
+  result.total_particles = particles.size();
+
+  FrameWriter frames(options.out_dir, scene, options.write_frames);
+  MetricsLog metrics(options.out_dir / "metrics.csv");
+  std::vector<std::string> probe_names;
+  for (const auto& p : scene.probes) probe_names.push_back(p.name);
+  ProbeLog probe_log(options.out_dir / "probes.csv", probe_names);
+  auto probe_values = [&](const Particles& state) {
+    std::vector<double> values;
+    for (const auto& p : scene.probes) values.push_back(evaluate_probe(p, state, spacing));
+    return values;
+  };
+  auto record_frame = [&](const Particles& state, double time) {
+    frames.write(state, time);
+    const auto values = probe_values(state);
+    probe_log.add(time, values);
+    metrics.flush();
+    result.final_probes.clear();
+    for (std::size_t i = 0; i < values.size(); ++i)
+      result.final_probes.emplace_back(probe_names[i], values[i]);
+  };
+
+  const double frame_interval = 1.0 / scene.output.fps;
+  int next_frame = 1;
+  record_frame(particles, 0.0);
+
+  Stopwatch wall;
+  std::vector<double> step_ms;
+  std::vector<std::pair<std::string, std::vector<double>>> stages;
+  double sum_dt = 0, sum_iterations = 0, sum_avg_error = 0;
+  auto add_stage = [&](const std::string& name, double ms) {
+    for (auto& [n, v] : stages)
+      if (n == name) {
+        v.push_back(ms);
+        return;
+      }
+    stages.push_back({name, {ms}});
+  };
+
+  auto finish = [&] {
+    result.wall_seconds = wall.elapsed_ms() / 1000.0;
+    result.steps = world->step_count();
+    result.simulated_time = world->time();
+    result.frames = frames.frames();
+    if (result.steps) {
+      result.mean_dt = sum_dt / double(result.steps);
+      result.mean_iterations = sum_iterations / double(result.steps);
+      result.mean_avg_density_error = sum_avg_error / double(result.steps);
+    }
+    double compute_s = 0;
+    for (double ms : step_ms) compute_s += ms / 1000.0;
+    if (compute_s > 0)
+      result.fluid_particle_steps_per_second =
+          double(result.liquid_particles) * double(result.steps) / compute_s;
+    write_summary(options.out_dir / "summary.json", scene, result, world->executor().threads(),
+                  step_ms, stages);
+  };
+
+  try {
+    while (world->time() < end - 1e-12) {
+      // Never step past the end time; the last step is shortened to land on it.
+      const double dt = std::min(world->next_time_step(), end - world->time());
+      world->step(dt);
+      const StepReport& r = world->last_step();
+      StepMetrics m;
+      m.step = world->step_count();
+      m.time = world->time();
+      m.kinetic_energy = kinetic_energy(particles, world->executor());
+      for (int t = 0; t < kParticleTypeCount; ++t)
+        m.count_by_type[t] = particles.count(static_cast<ParticleType>(t));
+      metrics.add(m, r);
+      step_ms.push_back(r.total_ms);
+      add_stage("neighbours", r.neighbour_ms);
+      for (const auto& [name, ms] : r.solver.stage_ms) add_stage(name, ms);
+      sum_dt += dt;
+      sum_iterations += r.solver.iterations;
+      sum_avg_error += r.solver.avg_density_error;
+      result.max_iterations = std::max(result.max_iterations, r.solver.iterations);
+      result.max_density_error = std::max(result.max_density_error, r.solver.max_density_error);
+
+      const bool at_end = world->time() >= end - 1e-12;
+      if (world->time() >= next_frame * frame_interval - 1e-12 || at_end) {
+        record_frame(particles, world->time());
+        while (next_frame * frame_interval <= world->time() + 1e-12) ++next_frame;
+      }
+      if (options.on_step) options.on_step(*world);
+      if (options.on_progress)
+        options.on_progress({world->time(), end, world->step_count(), wall.elapsed_ms() / 1000.0});
+    }
+  } catch (const InstabilityError& e) {
+    // The state before the failed step is the last good one: keep it on disk, then report.
+    const double last_good_time = world->time() - world->last_step().dt;
+    record_frame(world->last_good(), last_good_time);
+    result.status = "unstable";
+    result.failure = e.what();
+    finish();
+    throw;
+  }
+  finish();
+  return result;
+}
+
+}  // namespace upf

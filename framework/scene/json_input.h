@@ -1,0 +1,62 @@
+// Reading JSON with every problem collected under its JSON path ("/materials/water/density"),
+// so `upf validate` can list them all at once. Unknown keys get a did-you-mean suggestion.
+#pragma once
+
+#include <Eigen/Core>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/core/errors.h"
+
+namespace upf {
+
+// Closest candidate to `word` by edit distance, if it is close enough to be a likely typo.
+std::optional<std::string> did_you_mean(std::string_view word,
+                                        const std::vector<std::string>& candidates);
+
+class JsonInput {
+ public:
+  explicit JsonInput(std::vector<InputProblem>& problems) : problems_(problems) {}
+
+  void problem(const std::string& path, const std::string& message) {
+    problems_.push_back({path, message});
+  }
+  static std::string child(const std::string& path, std::string_view key) {
+    return path + "/" + std::string(key);
+  }
+  static std::string child(const std::string& path, std::size_t index) {
+    return path + "/" + std::to_string(index);
+  }
+
+  // False (with a problem) when `node` is not an object.
+  bool expect_object(const nlohmann::json& node, const std::string& path);
+  // Reports every key of `object` not in `allowed`.
+  void check_keys(const nlohmann::json& object, const std::string& path,
+                  const std::vector<std::string>& allowed);
+
+  // A number at object[key] within [lo, hi] (open at lo when `lo_open`), or `fallback` when the
+  // key is absent. On a problem, reports it and returns the fallback.
+  double number(const nlohmann::json& object, const std::string& path, std::string_view key,
+                double fallback, double lo, double hi, bool lo_open = false,
+                std::string_view unit = "");
+  std::optional<double> required_number(const nlohmann::json& object, const std::string& path,
+                                        std::string_view key, double lo, double hi,
+                                        bool lo_open = false, std::string_view unit = "");
+  std::optional<std::string> string(const nlohmann::json& object, const std::string& path,
+                                    std::string_view key, bool required);
+  std::optional<Eigen::Vector3d> vec3(const nlohmann::json& object, const std::string& path,
+                                      std::string_view key, bool required);
+  std::optional<Eigen::Vector2d> vec2(const nlohmann::json& object, const std::string& path,
+                                      std::string_view key, bool required);
+
+ private:
+  std::vector<InputProblem>& problems_;
+};
+
+std::string json_type_name(const nlohmann::json& node);
+
+}  // namespace upf

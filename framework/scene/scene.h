@@ -1,0 +1,78 @@
+// A scene as read from its JSON file: everything needed to build a World and run it. Reading
+// (scene_reader) checks every value; building (scene_builder) can then trust it.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "framework/materials/material.h"
+#include "framework/params/param_spec.h"
+#include "framework/world/world_settings.h"
+
+namespace upf {
+
+struct Box {
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+  bool contains(const Box& inner, double tolerance) const;
+};
+
+struct ContainerDesc {
+  std::string material;
+  Box box;  // the inner (fluid) side of the walls
+  int layers = 2;
+};
+
+struct FluidBlockDesc {
+  std::string material;
+  Box box;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+};
+
+enum class ProbeKind { Extent, Height, Pressure };
+
+struct ProbeDesc {
+  std::string name;
+  ProbeKind kind = ProbeKind::Extent;
+  int axis = 0;                 // extent: measured axis; height: the up axis
+  bool max_side = true;         // extent: largest (true) or smallest coordinate
+  std::optional<Box> region;    // extent: only liquid inside this box counts
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();  // height: the two other coordinates, in order
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // pressure: sphere centre
+  double radius = 0;            // height: column radius; pressure: sphere radius
+};
+
+struct OutputDesc {
+  double fps = 30;
+  std::vector<std::string> fields{"density", "pressure"};
+  bool vtp = true;
+};
+
+struct SceneDescription {
+  std::string name;
+  std::filesystem::path source;
+  WorldSettings world;
+  std::vector<Material> materials;  // solver params already merged with defaults
+  std::vector<ContainerDesc> containers;
+  std::vector<FluidBlockDesc> fluid_blocks;
+  std::vector<ProbeDesc> probes;
+  OutputDesc output;
+
+  // In double: a huge box at a tiny spacing must give a huge number, not an overflow.
+  double estimated_particles() const;
+};
+
+using Lattice = Eigen::Matrix<std::int64_t, 3, 1>;
+
+// Lattice sizes shared by the memory estimate and the builder, so they agree exactly.
+// Call only after the estimate has shown the counts are sane.
+Lattice fluid_lattice_size(const Box& box, double spacing);
+Lattice wall_lattice_size(const Box& box, double spacing);  // inner cells per axis
+double fluid_particle_estimate(const Box& box, double spacing);
+double wall_particle_estimate(const Box& box, double spacing, int layers);
+
+}  // namespace upf

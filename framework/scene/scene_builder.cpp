@@ -1,0 +1,72 @@
+#include "framework/scene/scene_builder.h"
+
+#include <map>
+
+namespace upf {
+
+namespace {
+Vec3 to_vec3(const Eigen::Vector3d& v) { return {Real(v[0]), Real(v[1]), Real(v[2])}; }
+}  // namespace
+
+void add_container_walls(Particles& particles, const Box& box, Real spacing, int layers,
+                         MaterialId material) {
+  // The lattice is stretched slightly per axis so that the walls sit exactly on the box faces.
+  const Lattice n = wall_lattice_size(box, spacing);
+  Eigen::Vector3d step;
+  for (int a = 0; a < 3; ++a) step[a] = (box.max[a] - box.min[a]) / double(n[a]);
+  for (std::int64_t k = -layers; k < n[2] + layers; ++k)
+    for (std::int64_t j = -layers; j < n[1] + layers; ++j)
+      for (std::int64_t i = -layers; i < n[0] + layers; ++i) {
+        const bool inside = i >= 0 && i < n[0] && j >= 0 && j < n[1] && k >= 0 && k < n[2];
+        if (inside) continue;
+        const Eigen::Vector3d x =
+            box.min + Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5)
+                          .cwiseProduct(step);
+        particles.add(to_vec3(x), Vec3{}, Real(0), ParticleType::Frozen, material);
+      }
+}
+
+void add_fluid_block(Particles& particles, const Box& box, Real spacing, const Vec3& velocity,
+                     Real particle_mass, MaterialId material) {
+  const Lattice n = fluid_lattice_size(box, spacing);
+  for (std::int64_t k = 0; k < n[2]; ++k)
+    for (std::int64_t j = 0; j < n[1]; ++j)
+      for (std::int64_t i = 0; i < n[0]; ++i) {
+        const Eigen::Vector3d x =
+            box.min + Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5) *
+                          double(spacing);
+        particles.add(to_vec3(x), velocity, particle_mass, ParticleType::Liquid, material);
+      }
+}
+
+std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry& registry,
+                                   int threads) {
+  auto world = std::make_unique<World>(scene.world, threads);
+  for (const auto& m : scene.materials) world->materials().add(m);
+  const Real h = scene.world.spacing;
+
+  Particles& p = world->particles();
+  p.reserve(std::size_t(scene.estimated_particles()));
+  for (const auto& c : scene.containers)
+    add_container_walls(p, c.box, h, c.layers, *world->materials().find(c.material));
+  for (const auto& b : scene.fluid_blocks) {
+    const MaterialId id = *world->materials().find(b.material);
+    // m = rho0 h^3: on the initial lattice the SPH density sum then gives rho0.
+    const Real mass = Real(world->materials()[id].param("density")) * h * h * h;
+    add_fluid_block(p, b.box, h, to_vec3(b.velocity), mass, id);
+  }
+
+  // One solver instance per name, moving every material that names it.
+  std::map<std::string, std::vector<MaterialId>> by_solver;
+  for (std::size_t i = 0; i < scene.materials.size(); ++i)
+    if (!scene.materials[i].solver.empty())
+      by_solver[scene.materials[i].solver].push_back(MaterialId(i));
+  for (auto& [name, materials] : by_solver) {
+    const SolverInfo* info = registry.find_solver(name);
+    const ParamValues& params = scene.materials[materials.front()].solver_params;
+    world->add_solver(info->create(params, materials));
+  }
+  return world;
+}
+
+}  // namespace upf

@@ -1,0 +1,440 @@
+#include "framework/scene/scene_reader.h"
+
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "framework/scene/json_input.h"
+
+namespace upf {
+
+namespace {
+
+using nlohmann::json;
+
+const std::vector<std::string> kTopKeys = {
+    "name",       "description", "gravity", "particle_spacing", "materials", "containers",
+    "fluid_blocks", "time",      "output",  "probes",           "stability", "neighbours"};
+const std::vector<std::string> kAxisNames = {"x", "y", "z"};
+const std::vector<std::string> kKnownFields = {"density", "pressure"};
+
+std::optional<int> read_axis(JsonInput& in, const json& object, const std::string& path,
+                             std::string_view key, std::optional<int> fallback) {
+  auto name = in.string(object, path, key, !fallback.has_value());
+  if (!name) return fallback;
+  for (int a = 0; a < 3; ++a)
+    if (*name == kAxisNames[std::size_t(a)]) return a;
+  in.problem(JsonInput::child(path, key), "axis '" + *name + "' is not one of x, y, z");
+  return std::nullopt;
+}
+
+std::optional<Box> read_box(JsonInput& in, const json& object, const std::string& path,
+                            double min_extent) {
+  auto lo = in.vec3(object, path, "min", true);
+  auto hi = in.vec3(object, path, "max", true);
+  if (!lo || !hi) return std::nullopt;
+  for (int a = 0; a < 3; ++a) {
+    if ((*hi)[a] - (*lo)[a] < min_extent) {
+      std::ostringstream msg;
+      msg << "box is " << (*hi)[a] - (*lo)[a] << " m along " << kAxisNames[std::size_t(a)]
+          << "; max must exceed min by at least one particle spacing (" << min_extent << " m)";
+      in.problem(JsonInput::child(path, "max"), msg.str());
+      return std::nullopt;
+    }
+  }
+  return Box{*lo, *hi};
+}
+
+void read_material(JsonInput& in, const json& node, const std::string& name,
+                   const std::string& path, const Registry& registry, SceneDescription& scene) {
+  if (!in.expect_object(node, path)) return;
+  auto type_name = in.string(node, path, "type", true);
+  if (!type_name) return;
+  const MaterialKind* kind = registry.find_material_kind(*type_name);
+  if (!kind) {
+    std::vector<std::string> names;
+    for (const auto& k : registry.material_kinds()) names.push_back(k.name);
+    std::string msg = "unknown material type '" + *type_name + "'";
+    if (auto guess = did_you_mean(*type_name, names)) msg += " (did you mean '" + *guess + "'?)";
+    in.problem(JsonInput::child(path, "type"), msg);
+    return;
+  }
+  Material m;
+  m.name = name;
+  m.kind = kind->name;
+  m.type = kind->type;
+  m.params = ParamValues(kind->params);
+  std::vector<std::string> allowed = {"type", "solver"};
+  for (const auto& spec : kind->params) {
+    allowed.push_back(spec.name);
+    if (!node.contains(spec.name)) continue;
+    // Densities and the like must be positive: the spec's range says so.
+    auto v = in.required_number(node, path, spec.name, spec.min_value, spec.max_value, false,
+                                spec.unit);
+    if (v) m.params.set(spec.name, *v);
+  }
+  in.check_keys(node, path, allowed);
+
+  // The solver: a name, or an object {"name": ..., parameters...}; the kind's default otherwise.
+  std::string solver_name = kind->default_solver;
+  const std::string solver_path = JsonInput::child(path, "solver");
+  const json* solver_node = nullptr;
+  if (auto it = node.find("solver"); it != node.end()) {
+    if (it->is_string()) {
+      solver_name = it->get<std::string>();
+    } else if (it->is_object()) {
+      solver_node = &*it;
+      auto n = in.string(*it, solver_path, "name", true);
+      if (!n) return;
+      solver_name = *n;
+    } else {
+      in.problem(solver_path, "expected a solver name or an object, found " + json_type_name(*it));
+      return;
+    }
+  }
+  if (!solver_name.empty()) {
+    const SolverInfo* solver = registry.find_solver(solver_name);
+    if (!solver || solver->type != kind->type) {
+      std::vector<std::string> names;
+      for (const auto& s : registry.solvers())
+        if (s.type == kind->type) names.push_back(s.name);
+      std::string msg = "no solver named '" + solver_name + "' for " + kind->name + " materials";
+      if (auto guess = did_you_mean(solver_name, names)) msg += " (did you mean '" + *guess + "'?)";
+      in.problem(solver_node ? JsonInput::child(solver_path, "name") : solver_path, msg);
+      return;
+    }
+    m.solver = solver_name;
+    m.solver_params = ParamValues(solver->params);
+    if (solver_node) {
+      std::vector<std::string> solver_keys = {"name"};
+      for (const auto& spec : solver->params) {
+        solver_keys.push_back(spec.name);
+        if (!solver_node->contains(spec.name)) continue;
+        auto v = in.required_number(*solver_node, solver_path, spec.name, spec.min_value,
+                                    spec.max_value, false, spec.unit);
+        if (v && spec.integer && *v != double(std::int64_t(*v))) {
+          in.problem(JsonInput::child(solver_path, spec.name), "must be a whole number");
+          continue;
+        }
+        if (v) m.solver_params.set(spec.name, *v);
+      }
+      in.check_keys(*solver_node, solver_path, solver_keys);
+    }
+  }
+  scene.materials.push_back(std::move(m));
+}
+
+const Material* find_material(const SceneDescription& scene, const std::string& name) {
+  for (const auto& m : scene.materials)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+// A material reference must name a declared material of the expected type.
+bool check_material_ref(JsonInput& in, const SceneDescription& scene, const std::string& name,
+                        const std::string& path, ParticleType expected) {
+  const Material* m = find_material(scene, name);
+  if (!m) {
+    std::vector<std::string> names;
+    for (const auto& mat : scene.materials) names.push_back(mat.name);
+    std::string msg = "no material named '" + name + "'";
+    if (auto guess = did_you_mean(name, names)) msg += " (did you mean '" + *guess + "'?)";
+    in.problem(path, msg);
+    return false;
+  }
+  if (m->type != expected) {
+    in.problem(path, "material '" + name + "' is " + std::string(to_string(m->type)) +
+                         ", expected a " + std::string(to_string(expected)) + " material");
+    return false;
+  }
+  return true;
+}
+
+void read_probe(JsonInput& in, const json& node, const std::string& path, double spacing,
+                SceneDescription& scene) {
+  if (!in.expect_object(node, path)) return;
+  ProbeDesc p;
+  auto name = in.string(node, path, "name", true);
+  auto type = in.string(node, path, "type", true);
+  if (!name || !type) return;
+  p.name = *name;
+  for (const auto& other : scene.probes)
+    if (other.name == p.name) in.problem(JsonInput::child(path, "name"), "duplicate probe name");
+  if (*type == "extent") {
+    p.kind = ProbeKind::Extent;
+    in.check_keys(node, path, {"name", "type", "axis", "side", "region"});
+    p.axis = read_axis(in, node, path, "axis", std::nullopt).value_or(0);
+    auto side = in.string(node, path, "side", false).value_or("max");
+    if (side != "max" && side != "min")
+      in.problem(JsonInput::child(path, "side"), "side '" + side + "' is not 'min' or 'max'");
+    p.max_side = side == "max";
+    if (auto it = node.find("region"); it != node.end()) {
+      const std::string rp = JsonInput::child(path, "region");
+      if (in.expect_object(*it, rp)) {
+        in.check_keys(*it, rp, {"min", "max"});
+        p.region = read_box(in, *it, rp, 0.0);
+      }
+    }
+  } else if (*type == "height") {
+    p.kind = ProbeKind::Height;
+    in.check_keys(node, path, {"name", "type", "axis", "at", "radius"});
+    p.axis = read_axis(in, node, path, "axis", 1).value_or(1);
+    if (auto at = in.vec2(node, path, "at", true)) p.at = *at;
+    p.radius = in.number(node, path, "radius", 2 * spacing, 0, 1e6, true, "m");
+  } else if (*type == "pressure") {
+    p.kind = ProbeKind::Pressure;
+    in.check_keys(node, path, {"name", "type", "center", "radius"});
+    if (auto c = in.vec3(node, path, "center", true)) p.center = *c;
+    p.radius = in.number(node, path, "radius", 2 * spacing, 0, 1e6, true, "m");
+  } else {
+    std::string msg = "unknown probe type '" + *type + "'";
+    if (auto guess = did_you_mean(*type, {"extent", "height", "pressure"}))
+      msg += " (did you mean '" + *guess + "'?)";
+    in.problem(JsonInput::child(path, "type"), msg);
+    return;
+  }
+  scene.probes.push_back(std::move(p));
+}
+
+double available_memory_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kib = 0;
+  while (meminfo >> key >> kib) {
+    if (key == "MemAvailable:") return kib * 1024.0;
+    meminfo.ignore(256, '\n');
+  }
+  const long pages = sysconf(_SC_AVPHYS_PAGES);
+  const long page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 1e18;
+}
+
+}  // namespace
+
+SceneDescription read_scene(const json& doc, const Registry& registry, const std::string& source) {
+  std::vector<InputProblem> problems;
+  JsonInput in(problems);
+  SceneDescription scene;
+  scene.source = source;
+  auto fail_if_any = [&] {
+    if (problems.empty()) return;
+    for (auto& p : problems) p.where = source + ":" + (p.where.empty() ? "/" : p.where);
+    throw InputError(std::move(problems));
+  };
+  if (!in.expect_object(doc, "")) fail_if_any();
+  in.check_keys(doc, "", kTopKeys);
+
+  scene.name = in.string(doc, "", "name", false)
+                   .value_or(std::filesystem::path(source).stem().string());
+  in.string(doc, "", "description", false);
+  if (auto g = in.vec3(doc, "", "gravity", false)) {
+    scene.world.gravity = {Real((*g)[0]), Real((*g)[1]), Real((*g)[2])};
+  }
+  WorldSettings& w = scene.world;
+  const auto spacing = in.required_number(doc, "", "particle_spacing", 0, 100, true, "m");
+  if (spacing) w.spacing = Real(*spacing);
+  const double h = spacing.value_or(1.0);
+
+  // Time.
+  if (auto it = doc.find("time"); it != doc.end() && in.expect_object(*it, "/time")) {
+    in.check_keys(*it, "/time", {"end", "dt_min", "dt_max", "cfl", "fixed_dt"});
+    auto& t = w.time;
+    t.end = in.number(*it, "/time", "end", t.end, 0, 1e7, true, "s");
+    t.dt_min = in.number(*it, "/time", "dt_min", t.dt_min, 0, 10, true, "s");
+    t.dt_max = in.number(*it, "/time", "dt_max", t.dt_max, 0, 10, true, "s");
+    t.cfl = in.number(*it, "/time", "cfl", t.cfl, 0, 1, true);
+    t.fixed_dt = in.number(*it, "/time", "fixed_dt", t.fixed_dt, 0, 10, false, "s");
+    if (t.dt_min > t.dt_max)
+      in.problem("/time/dt_min", "dt_min (" + std::to_string(t.dt_min) +
+                                     " s) is larger than dt_max (" + std::to_string(t.dt_max) +
+                                     " s)");
+  }
+  if (auto it = doc.find("stability"); it != doc.end() && in.expect_object(*it, "/stability")) {
+    in.check_keys(*it, "/stability", {"max_speed"});
+    w.max_speed = in.number(*it, "/stability", "max_speed", w.max_speed, 0, 1e6, true, "m/s");
+  }
+  if (auto it = doc.find("neighbours"); it != doc.end() && in.expect_object(*it, "/neighbours")) {
+    in.check_keys(*it, "/neighbours", {"reorder_every"});
+    w.reorder_every = int(in.number(*it, "/neighbours", "reorder_every", w.reorder_every, 0, 1e6));
+  }
+
+  // Materials.
+  if (auto it = doc.find("materials"); it == doc.end()) {
+    in.problem("/materials", "missing (an object of named materials is required)");
+  } else if (in.expect_object(*it, "/materials")) {
+    for (auto m = it->begin(); m != it->end(); ++m)
+      read_material(in, m.value(), m.key(), JsonInput::child("/materials", m.key()), registry,
+                    scene);
+  }
+  // Materials sharing a solver share one instance: their solver parameters must agree.
+  for (std::size_t a = 0; a < scene.materials.size(); ++a)
+    for (std::size_t b = 0; b < a; ++b) {
+      const auto &ma = scene.materials[a], &mb = scene.materials[b];
+      if (!ma.solver.empty() && ma.solver == mb.solver &&
+          ma.solver_params.all() != mb.solver_params.all())
+        in.problem("/materials/" + ma.name + "/solver",
+                   "parameters of solver '" + ma.solver + "' differ from those of material '" +
+                       mb.name + "'; materials sharing a solver must share its parameters");
+    }
+
+  // Containers.
+  if (auto it = doc.find("containers"); it != doc.end()) {
+    if (!it->is_array()) {
+      in.problem("/containers", "expected an array, found " + json_type_name(*it));
+    } else {
+      for (std::size_t i = 0; i < it->size(); ++i) {
+        const std::string path = JsonInput::child("/containers", i);
+        const json& c = (*it)[i];
+        if (!in.expect_object(c, path)) continue;
+        in.check_keys(c, path, {"material", "min", "max", "layers"});
+        ContainerDesc desc;
+        auto mat = in.string(c, path, "material", true);
+        if (mat && check_material_ref(in, scene, *mat, JsonInput::child(path, "material"),
+                                      ParticleType::Frozen))
+          desc.material = *mat;
+        desc.layers = int(in.number(c, path, "layers", 2, 1, 10));
+        auto box = read_box(in, c, path, h);
+        if (box) desc.box = *box;
+        if (mat && box) scene.containers.push_back(desc);
+      }
+    }
+  }
+
+  // Fluid blocks: each must sit inside a container.
+  if (auto it = doc.find("fluid_blocks"); it != doc.end()) {
+    if (!it->is_array()) {
+      in.problem("/fluid_blocks", "expected an array, found " + json_type_name(*it));
+    } else {
+      for (std::size_t i = 0; i < it->size(); ++i) {
+        const std::string path = JsonInput::child("/fluid_blocks", i);
+        const json& b = (*it)[i];
+        if (!in.expect_object(b, path)) continue;
+        in.check_keys(b, path, {"material", "min", "max", "velocity"});
+        FluidBlockDesc desc;
+        auto mat = in.string(b, path, "material", true);
+        const bool mat_ok = mat && check_material_ref(in, scene, *mat,
+                                                      JsonInput::child(path, "material"),
+                                                      ParticleType::Liquid);
+        if (mat_ok) desc.material = *mat;
+        if (auto v = in.vec3(b, path, "velocity", false)) desc.velocity = *v;
+        auto box = read_box(in, b, path, h);
+        if (!box) continue;
+        desc.box = *box;
+        bool inside = false;
+        for (const auto& c : scene.containers) inside = inside || c.box.contains(*box, 1e-9);
+        if (!inside) {
+          std::ostringstream msg;
+          msg << "fluid block [" << box->min.transpose() << "] - [" << box->max.transpose()
+              << "] is not inside any container";
+          in.problem(path, msg.str());
+        }
+        if (mat_ok) scene.fluid_blocks.push_back(desc);
+      }
+    }
+  }
+  if (scene.fluid_blocks.empty() && problems.empty())
+    in.problem("/fluid_blocks", "the scene has no fluid block: nothing would move");
+
+  // Output.
+  if (auto it = doc.find("output"); it != doc.end() && in.expect_object(*it, "/output")) {
+    in.check_keys(*it, "/output", {"fps", "fields", "formats"});
+    scene.output.fps = in.number(*it, "/output", "fps", scene.output.fps, 0, 1e6, true, "1/s");
+    if (auto f = it->find("fields"); f != it->end()) {
+      scene.output.fields.clear();
+      if (!f->is_array()) {
+        in.problem("/output/fields", "expected an array of field names");
+      } else {
+        for (std::size_t i = 0; i < f->size(); ++i) {
+          const std::string path = JsonInput::child("/output/fields", i);
+          const json& name = (*f)[i];
+          if (!name.is_string()) {
+            in.problem(path, "expected a field name, found " + json_type_name(name));
+            continue;
+          }
+          const std::string s = name.get<std::string>();
+          if (std::find(kKnownFields.begin(), kKnownFields.end(), s) == kKnownFields.end()) {
+            std::string msg = "unknown field '" + s + "'";
+            if (auto guess = did_you_mean(s, kKnownFields)) msg += " (did you mean '" + *guess + "'?)";
+            in.problem(path, msg);
+            continue;
+          }
+          scene.output.fields.push_back(s);
+        }
+      }
+    }
+    if (auto f = it->find("formats"); f != it->end()) {
+      scene.output.vtp = false;
+      if (!f->is_array()) {
+        in.problem("/output/formats", "expected an array of format names");
+      } else {
+        for (std::size_t i = 0; i < f->size(); ++i) {
+          const json& name = (*f)[i];
+          if (name.is_string() && name.get<std::string>() == "vtp") {
+            scene.output.vtp = true;
+          } else {
+            in.problem(JsonInput::child("/output/formats", i),
+                       "unknown format " + name.dump() + " (known: \"vtp\")");
+          }
+        }
+      }
+    }
+  }
+
+  // Probes.
+  if (auto it = doc.find("probes"); it != doc.end()) {
+    if (!it->is_array()) {
+      in.problem("/probes", "expected an array, found " + json_type_name(*it));
+    } else {
+      for (std::size_t i = 0; i < it->size(); ++i)
+        read_probe(in, (*it)[i], JsonInput::child("/probes", i), h, scene);
+    }
+  }
+
+  // Memory: estimated before anything is allocated.
+  if (problems.empty()) {
+    const double particles = scene.estimated_particles();
+    const double needed = particles * kEstimatedBytesPerParticle;
+    const double available = available_memory_bytes();
+    if (particles > 4.0e9 || needed > available) {
+      std::ostringstream msg;
+      msg << "the scene would create about " << particles << " particles, needing about "
+          << needed / double(1 << 30) << " GiB; this machine has " << available / double(1 << 30)
+          << " GiB available. Increase the spacing or shrink the blocks";
+      in.problem("/particle_spacing", msg.str());
+    }
+  }
+  fail_if_any();
+  return scene;
+}
+
+SceneDescription load_scene_file(const std::filesystem::path& path, const Registry& registry) {
+  std::ifstream file(path);
+  if (!file) {
+    throw InputError(path.string(), std::filesystem::exists(path)
+                                        ? "cannot be read (permissions?)"
+                                        : "no such file");
+  }
+  std::stringstream text;
+  text << file.rdbuf();
+  json doc;
+  try {
+    doc = json::parse(text.str());
+  } catch (const json::parse_error& e) {
+    // Turn the byte offset into a line and column the user can find.
+    const std::string s = text.str();
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < s.size(); ++i) {
+      if (s[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    throw InputError(path.string() + ":" + std::to_string(line) + ":" + std::to_string(column),
+                     std::string("invalid JSON: ") + e.what());
+  }
+  return read_scene(doc, registry, path.string());
+}
+
+}  // namespace upf

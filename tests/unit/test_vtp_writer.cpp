@@ -1,0 +1,411 @@
+// Tests for the output writers: atomic file replacement, the VTK XML PolyData (.vtp) frame writer
+// and the ParaView .pvd series. The .vtp is parsed back here independently of the writer, following
+// the VTK XML file format documentation:
+// https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "framework/core/errors.h"
+#include "framework/output/atomic_file.h"
+#include "framework/output/pvd_series.h"
+#include "framework/output/vtp_writer.h"
+#include "framework/particles/particles.h"
+
+namespace upf {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
+// Each test gets its own directory, so tests may run in parallel processes (ctest -j).
+class TempDirTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::random_device rd;
+    dir_ = fs::temp_directory_path() / ("upf_" + std::string(info->test_suite_name()) + "_" +
+                                        info->name() + "_" + std::to_string(rd()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+  fs::path dir_;
+};
+
+class AtomicFileTest : public TempDirTest {};
+class VtpWriterTest : public TempDirTest {};
+class PvdSeriesTest : public TempDirTest {};
+
+// Runs `f`, expects an OutputError and returns its message.
+template <class F>
+std::string output_error_message(F&& f) {
+  try {
+    f();
+  } catch (const OutputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected OutputError";
+  return {};
+}
+
+// ---------------------------------------------------------------------------------------------
+// A minimal reader for what write_vtp produces.
+
+struct ArrayInfo {
+  std::string name;
+  std::string type;
+  int components = 1;
+  std::uint64_t offset = 0;
+};
+
+struct VtpFile {
+  std::string xml;  // everything before the appended data
+  std::map<std::string, std::string> piece;
+  std::vector<ArrayInfo> arrays;
+  std::string raw;  // the appended block, from the byte after '_'
+
+  // Decodes one array: UInt64 byte count, then the values.
+  template <class T>
+  std::vector<T> decode(const std::string& name) const {
+    for (const ArrayInfo& a : arrays) {
+      if (a.name != name) continue;
+      std::uint64_t bytes = 0;
+      EXPECT_LE(a.offset + sizeof(bytes), raw.size());
+      std::memcpy(&bytes, raw.data() + a.offset, sizeof(bytes));
+      EXPECT_EQ(bytes % sizeof(T), 0u);
+      EXPECT_LE(a.offset + sizeof(bytes) + bytes, raw.size());
+      std::vector<T> values(bytes / sizeof(T));
+      std::memcpy(values.data(), raw.data() + a.offset + sizeof(bytes), bytes);
+      return values;
+    }
+    ADD_FAILURE() << "no array named " << name;
+    return {};
+  }
+  const ArrayInfo* find(const std::string& name) const {
+    for (const ArrayInfo& a : arrays)
+      if (a.name == name) return &a;
+    return nullptr;
+  }
+};
+
+// The name="value" pairs of one start tag. Hand-written rather than std::regex, whose GCC 12
+// implementation trips -Wmaybe-uninitialized in optimised sanitizer builds.
+std::map<std::string, std::string> attributes(const std::string& element) {
+  std::map<std::string, std::string> attrs;
+  std::size_t pos = 0;
+  while ((pos = element.find("=\"", pos)) != std::string::npos) {
+    const std::size_t name_begin = element.find_last_of(" \t\n", pos) + 1;
+    const std::size_t value_end = element.find('"', pos + 2);
+    if (value_end == std::string::npos) break;
+    attrs[element.substr(name_begin, pos - name_begin)] =
+        element.substr(pos + 2, value_end - pos - 2);
+    pos = value_end + 1;
+  }
+  return attrs;
+}
+
+// Every start tag in `text` that begins with `open` (for example "<DataArray"), up to its '>'.
+std::vector<std::string> elements(const std::string& text, const std::string& open) {
+  std::vector<std::string> found;
+  for (std::size_t pos = text.find(open); pos != std::string::npos;
+       pos = text.find(open, pos + 1)) {
+    found.push_back(text.substr(pos, text.find('>', pos) + 1 - pos));
+  }
+  return found;
+}
+
+VtpFile parse_vtp(const fs::path& p) {
+  const std::string text = read_all(p);
+  VtpFile f;
+  const std::string marker = "<AppendedData encoding=\"raw\">";
+  const std::size_t appended = text.find(marker);
+  EXPECT_NE(appended, std::string::npos);
+  if (appended == std::string::npos) return f;
+  const std::size_t underscore = text.find('_', appended + marker.size());
+  EXPECT_NE(underscore, std::string::npos);
+  // Only whitespace may stand between the element and the '_'.
+  EXPECT_EQ(text.find_first_not_of(" \n", appended + marker.size()), underscore);
+  f.xml = text.substr(0, appended);
+  f.raw = text.substr(underscore + 1);
+
+  const std::string vtkfile = f.xml.substr(f.xml.find("<VTKFile"));
+  const auto head = attributes(vtkfile.substr(0, vtkfile.find('>')));
+  EXPECT_EQ(head.at("type"), "PolyData");
+  EXPECT_EQ(head.at("byte_order"), "LittleEndian");
+  EXPECT_EQ(head.at("header_type"), "UInt64");
+
+  const std::size_t piece = f.xml.find("<Piece");
+  f.piece = attributes(f.xml.substr(piece, f.xml.find('>', piece) - piece));
+
+  for (const std::string& element : elements(f.xml, "<DataArray")) {
+    auto a = attributes(element);
+    EXPECT_EQ(a["format"], "appended");
+    ArrayInfo info;
+    info.name = a["Name"];
+    info.type = a["type"];
+    if (a.count("NumberOfComponents")) info.components = std::stoi(a["NumberOfComponents"]);
+    info.offset = std::stoull(a["offset"]);
+    f.arrays.push_back(info);
+  }
+  return f;
+}
+
+constexpr const char* kRealName = std::is_same_v<Real, double> ? "Float64" : "Float32";
+
+Particles sample_particles() {
+  Particles p;
+  p.add({0.5f, -1.25f, 2.0f}, {1, 2, 3}, 1, ParticleType::Liquid, 7);
+  p.add({1e-3f, 4.0f, -0.0f}, {-1, 0.25f, 8}, 1, ParticleType::Granular, 2);
+  p.add({3.0f, 3.5f, 1e6f}, {0, 0, -9.81f}, 2, ParticleType::Frozen, 65535, 4);
+  auto& density = p.scalar_field("density", Real(1000), true);
+  density = {Real(999.5), Real(1000.25), Real(1e-7)};
+  auto& accel = p.vector_field("accel", Vec3{}, true);
+  accel[1] = Vec3{Real(0.1), Real(0.2), Real(0.3)};
+  p.scalar_field("unexported", Real(5));
+  return p;
+}
+
+std::vector<Real> flatten(const std::vector<Vec3>& v) {
+  std::vector<Real> out;
+  for (const Vec3& x : v) out.insert(out.end(), {x.x, x.y, x.z});
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Atomic files
+
+TEST_F(AtomicFileTest, ReplacesExistingFileAndLeavesNoTemp) {
+  const fs::path p = dir_ / "a.txt";
+  write_file_atomically(p, [](std::ostream& out) { out << "old"; });
+  write_file_atomically(p, [](std::ostream& out) { out << "new"; });
+  EXPECT_EQ(read_all(p), "new");
+  EXPECT_FALSE(fs::exists(dir_ / "a.txt.tmp"));
+}
+
+TEST_F(AtomicFileTest, WriteErrorKeepsOldFileAndRemovesTemp) {
+  const fs::path p = dir_ / "a.txt";
+  write_text(p, "old");
+  const std::string msg = output_error_message([&] {
+    write_file_atomically(p, [](std::ostream& out) {
+      out << "partial";
+      out.setstate(std::ios::badbit);  // what a failed write(2) does to the stream
+    });
+  });
+  EXPECT_NE(msg.find(p.string()), std::string::npos) << msg;
+  EXPECT_EQ(read_all(p), "old");
+  EXPECT_FALSE(fs::exists(dir_ / "a.txt.tmp"));
+}
+
+TEST_F(AtomicFileTest, DiskFullIsReportedWithReason) {
+  // /dev/full fails every write with ENOSPC; reach it through the temporary file's name.
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const fs::path p = dir_ / "frame.vtp";
+  write_text(p, "old");
+  fs::create_symlink("/dev/full", dir_ / "frame.vtp.tmp");
+  const std::string msg = output_error_message([&] {
+    write_file_atomically(p, [](std::ostream& out) { out << std::string(100000, 'x'); });
+  });
+  EXPECT_NE(msg.find(p.string()), std::string::npos) << msg;
+  EXPECT_NE(msg.find(std::strerror(ENOSPC)), std::string::npos) << msg;
+  EXPECT_EQ(read_all(p), "old");
+  EXPECT_FALSE(fs::exists(fs::symlink_status(dir_ / "frame.vtp.tmp")));
+  EXPECT_TRUE(fs::exists("/dev/full"));
+}
+
+TEST_F(AtomicFileTest, CallbackExceptionPropagatesAndRemovesTemp) {
+  const fs::path p = dir_ / "a.txt";
+  write_text(p, "old");
+  EXPECT_THROW(write_file_atomically(p,
+                                     [](std::ostream& out) {
+                                       out << "partial";
+                                       throw std::runtime_error("boom");
+                                     }),
+               std::runtime_error);
+  EXPECT_EQ(read_all(p), "old");
+  EXPECT_FALSE(fs::exists(dir_ / "a.txt.tmp"));
+}
+
+TEST_F(AtomicFileTest, RenameFailureRemovesTempAndNamesPath) {
+  const fs::path p = dir_ / "occupied";
+  fs::create_directories(p / "inside");  // a non-empty directory cannot be replaced by a file
+  const std::string msg = output_error_message(
+      [&] { write_file_atomically(p, [](std::ostream& out) { out << "x"; }); });
+  EXPECT_NE(msg.find(p.string()), std::string::npos) << msg;
+  EXPECT_TRUE(fs::is_directory(p / "inside"));
+  EXPECT_FALSE(fs::exists(dir_ / "occupied.tmp"));
+}
+
+TEST_F(AtomicFileTest, EnsureDirectoryCreatesNestedDirectories) {
+  const fs::path d = dir_ / "a" / "b" / "c";
+  ensure_directory(d);
+  EXPECT_TRUE(fs::is_directory(d));
+  ensure_directory(d);  // existing is fine
+}
+
+TEST_F(AtomicFileTest, EnsureDirectoryThrowsWhenAFileIsInTheWay) {
+  write_text(dir_ / "file", "x");
+  for (const fs::path& d : {dir_ / "file", dir_ / "file" / "sub"}) {
+    const std::string msg = output_error_message([&] { ensure_directory(d); });
+    EXPECT_NE(msg.find(d.string()), std::string::npos) << msg;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// .vtp frames
+
+TEST_F(VtpWriterTest, RoundTripsArraysExactly) {
+  const Particles p = sample_particles();
+  const fs::path file = dir_ / "frame_000001.vtp";
+  write_vtp(file, p, {"density", "no.such.field", "accel", "density"});
+  EXPECT_FALSE(fs::exists(dir_ / "frame_000001.vtp.tmp"));
+
+  const VtpFile f = parse_vtp(file);
+  EXPECT_EQ(f.piece.at("NumberOfPoints"), "3");
+  EXPECT_EQ(f.piece.at("NumberOfVerts"), "3");
+
+  std::vector<std::string> names;
+  for (const ArrayInfo& a : f.arrays) names.push_back(a.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"id", "type", "material", "velocity", "density",
+                                             "accel", "Points", "connectivity", "offsets"}));
+  EXPECT_EQ(f.find("id")->type, "UInt32");
+  EXPECT_EQ(f.find("type")->type, "UInt8");
+  EXPECT_EQ(f.find("material")->type, "UInt16");
+  EXPECT_EQ(f.find("velocity")->type, kRealName);
+  EXPECT_EQ(f.find("velocity")->components, 3);
+  EXPECT_EQ(f.find("density")->type, kRealName);
+  EXPECT_EQ(f.find("density")->components, 1);
+  EXPECT_EQ(f.find("accel")->components, 3);
+  EXPECT_EQ(f.find("Points")->type, kRealName);
+  EXPECT_EQ(f.find("Points")->components, 3);
+  EXPECT_EQ(f.find("connectivity")->type, "Int64");
+  EXPECT_EQ(f.find("offsets")->type, "Int64");
+  // The 'unexported' field was not asked for.
+  EXPECT_EQ(f.find("unexported"), nullptr);
+
+  EXPECT_EQ(f.decode<std::uint32_t>("id"), (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_EQ(f.decode<std::uint8_t>("type"), (std::vector<std::uint8_t>{0, 2, 3}));
+  EXPECT_EQ(f.decode<std::uint16_t>("material"), (std::vector<std::uint16_t>{7, 2, 65535}));
+  EXPECT_EQ(f.decode<Real>("Points"), flatten(p.position));
+  EXPECT_EQ(f.decode<Real>("velocity"), flatten(p.velocity));
+  EXPECT_EQ(f.decode<Real>("density"), (std::vector<Real>{Real(999.5), Real(1000.25), Real(1e-7)}));
+  EXPECT_EQ(f.decode<Real>("accel"), flatten(*p.find_vector("accel")));
+  EXPECT_EQ(f.decode<std::int64_t>("connectivity"), (std::vector<std::int64_t>{0, 1, 2}));
+  EXPECT_EQ(f.decode<std::int64_t>("offsets"), (std::vector<std::int64_t>{1, 2, 3}));
+
+  // The blocks are contiguous and the last one ends where the XML resumes.
+  const ArrayInfo& last = f.arrays.back();
+  const std::size_t end = last.offset + sizeof(std::uint64_t) + 3 * sizeof(std::int64_t);
+  EXPECT_EQ(f.raw.substr(end), "\n  </AppendedData>\n</VTKFile>\n");
+}
+
+TEST_F(VtpWriterTest, IdsFollowParticlesAfterReordering) {
+  Particles p = sample_particles();
+  p.permute({2, 0, 1});
+  const fs::path file = dir_ / "permuted.vtp";
+  write_vtp(file, p, {"density"});
+  const VtpFile f = parse_vtp(file);
+  EXPECT_EQ(f.decode<std::uint32_t>("id"), (std::vector<std::uint32_t>{2, 0, 1}));
+  EXPECT_EQ(f.decode<Real>("density"), (std::vector<Real>{Real(1e-7), Real(999.5), Real(1000.25)}));
+  EXPECT_EQ(f.decode<Real>("Points"), flatten(p.position));
+}
+
+TEST_F(VtpWriterTest, EmptyParticlesGiveAValidEmptyFile) {
+  const Particles p;
+  const fs::path file = dir_ / "empty.vtp";
+  write_vtp(file, p, {});
+  const VtpFile f = parse_vtp(file);
+  EXPECT_EQ(f.piece.at("NumberOfPoints"), "0");
+  ASSERT_EQ(f.arrays.size(), 7u);
+  EXPECT_TRUE(f.decode<Real>("Points").empty());
+  EXPECT_TRUE(f.decode<std::int64_t>("offsets").empty());
+}
+
+TEST_F(VtpWriterTest, MissingDirectoryThrowsNamingPath) {
+  const fs::path file = dir_ / "no_such_dir" / "frame.vtp";
+  const std::string msg = output_error_message([&] { write_vtp(file, sample_particles(), {}); });
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(dir_ / "no_such_dir"));
+}
+
+TEST_F(VtpWriterTest, DirectoryThatIsAFileThrowsNamingPath) {
+  write_text(dir_ / "plain_file", "x");
+  const fs::path file = dir_ / "plain_file" / "frame.vtp";
+  const std::string msg = output_error_message([&] { write_vtp(file, sample_particles(), {}); });
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+  EXPECT_EQ(read_all(dir_ / "plain_file"), "x");
+}
+
+TEST_F(VtpWriterTest, FailedRewriteLeavesPreviousFrameIntact) {
+  const fs::path file = dir_ / "frame.vtp";
+  write_vtp(file, sample_particles(), {"density"});
+  const std::string before = read_all(file);
+  // A directory where the temporary file should go makes the next write fail to open.
+  fs::create_directory(dir_ / "frame.vtp.tmp");
+  Particles other;
+  other.add({9, 9, 9}, {}, 1, ParticleType::Liquid, 0);
+  const std::string msg = output_error_message([&] { write_vtp(file, other, {}); });
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+  EXPECT_EQ(read_all(file), before);
+  EXPECT_TRUE(fs::is_directory(dir_ / "frame.vtp.tmp"));  // not ours: left alone
+}
+
+// ---------------------------------------------------------------------------------------------
+// .pvd series
+
+TEST_F(PvdSeriesTest, ListsEveryAddedTimeAndFile) {
+  const fs::path pvd = dir_ / "run.pvd";
+  PvdSeries series(pvd);
+  series.add(0.0, "frames/frame_000000.vtp");
+  EXPECT_NE(read_all(pvd).find("frame_000000.vtp"), std::string::npos);  // on disk at once
+  series.add(0.1, "frames/frame_000001.vtp");
+  series.add(2.5e-3, "frames/a&b.vtp");
+
+  const std::string xml = read_all(pvd);
+  EXPECT_NE(xml.find("<VTKFile type=\"Collection\""), std::string::npos);
+  std::vector<std::pair<double, std::string>> entries;
+  for (const std::string& element : elements(xml, "<DataSet")) {
+    auto a = attributes(element);
+    entries.emplace_back(std::stod(a["timestep"]), a["file"]);
+  }
+  const std::vector<std::pair<double, std::string>> expected = {
+      {0.0, "frames/frame_000000.vtp"},
+      {0.1, "frames/frame_000001.vtp"},
+      {2.5e-3, "frames/a&amp;b.vtp"},
+  };
+  EXPECT_EQ(entries, expected);  // times round-trip exactly
+  EXPECT_FALSE(fs::exists(dir_ / "run.pvd.tmp"));
+}
+
+TEST_F(PvdSeriesTest, UnwritableSeriesThrowsNamingPath) {
+  const fs::path pvd = dir_ / "missing" / "run.pvd";
+  PvdSeries series(pvd);
+  const std::string msg = output_error_message([&] { series.add(0.0, "f.vtp"); });
+  EXPECT_NE(msg.find(pvd.string()), std::string::npos) << msg;
+}
+
+}  // namespace
+}  // namespace upf
