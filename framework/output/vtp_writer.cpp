@@ -173,7 +173,10 @@ void write_vtp(const std::filesystem::path& path, const Particles& particles,
       for (const Array& a : *group) {
         const Header bytes = a.bytes;
         out.write(reinterpret_cast<const char*>(&bytes), sizeof(bytes));
-        out.write(static_cast<const char*>(a.data), static_cast<std::streamsize>(a.bytes));
+        // An empty vector's data() may be null, which write() must not see.
+        if (a.bytes > 0) {
+          out.write(static_cast<const char*>(a.data), static_cast<std::streamsize>(a.bytes));
+        }
       }
     }
     out << "\n  </AppendedData>\n</VTKFile>\n";

@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "framework/boundary/akinci_volume.h"
+
 namespace upf {
 
 namespace {
@@ -47,8 +49,14 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
 
   Particles& p = world->particles();
   p.reserve(std::size_t(scene.estimated_particles()));
-  for (const auto& c : scene.containers)
+  for (const auto& c : scene.containers) {
+    const std::size_t first = p.size();
     add_container_walls(p, c.box, h, c.layers, *world->materials().find(c.material));
+    // Flat lattice walls: correct the Akinci volumes of the one-sided fluid-facing layer.
+    auto& scale = p.scalar_field(kBoundaryVolumeScaleField, Real(1));
+    const Real gamma = wall_volume_scale(world->kernel(), h, c.layers);
+    for (std::size_t i = first; i < p.size(); ++i) scale[i] = gamma;
+  }
   for (const auto& b : scene.fluid_blocks) {
     const MaterialId id = *world->materials().find(b.material);
     // m = rho0 h^3: on the initial lattice the SPH density sum then gives rho0.

@@ -11,7 +11,6 @@
 #include <iterator>
 #include <map>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -99,7 +98,7 @@ struct VtpFile {
       EXPECT_EQ(bytes % sizeof(T), 0u);
       EXPECT_LE(a.offset + sizeof(bytes) + bytes, raw.size());
       std::vector<T> values(bytes / sizeof(T));
-      std::memcpy(values.data(), raw.data() + a.offset + sizeof(bytes), bytes);
+      if (bytes > 0) std::memcpy(values.data(), raw.data() + a.offset + sizeof(bytes), bytes);
       return values;
     }
     ADD_FAILURE() << "no array named " << name;

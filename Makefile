@@ -1,0 +1,33 @@
+# Front doors. Both install what is missing first (scripts/install-deps), then build with CMake.
+#   make demo   build Release and run samples/dam_break.json into out/dam_break/
+#   make test   build Release and run every test with ctest
+#   make asan   build with ASan+UBSan and run the unit tests
+JOBS ?= $(shell nproc)
+
+.PHONY: all deps build demo test asan bench clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps
+
+build: deps
+	cmake --preset release
+	cmake --build --preset release -j $(JOBS)
+
+demo: build
+	./build/release/apps/upf/upf run samples/dam_break.json --out out/dam_break
+
+test: build
+	ctest --preset release -j $(JOBS)
+
+asan: deps
+	cmake --preset asan
+	cmake --build --preset asan -j $(JOBS) --target upf_unit_tests
+	ctest --preset asan -j $(JOBS)
+
+bench: build
+	./build/release/bench/bench_dam_break
+
+clean:
+	rm -rf build out
