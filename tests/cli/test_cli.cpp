@@ -1,0 +1,154 @@
+// The `upf` program as a user meets it: bad input of every class gives exit code 2 and names the
+// culprit (file and JSON path), an unstable run gives exit code 3 after writing the last good
+// frame, and a good run writes its outputs.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code;
+  std::string output;
+};
+
+Result run_upf(const std::string& args) {
+  const std::string command = std::string(UPF_EXECUTABLE) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), int(buffer.size()), pipe)) output += buffer.data();
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("upf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  nlohmann::json sample() const {
+    std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / "dam_break.json");
+    auto doc = nlohmann::json::parse(in);
+    doc["particle_spacing"] = 0.05;
+    return doc;
+  }
+  std::string write(const nlohmann::json& doc, const std::string& name = "scene.json") const {
+    const fs::path path = dir_ / name;
+    std::ofstream(path) << doc.dump(2);
+    return path.string();
+  }
+  // Validates `doc`; expects exit code 2 and every `needle` in the message.
+  void expect_rejected(const nlohmann::json& doc, std::initializer_list<std::string> needles) {
+    const Result r = run_upf("validate " + write(doc));
+    EXPECT_EQ(r.code, 2) << r.output;
+    for (const auto& n : needles) EXPECT_NE(r.output.find(n), std::string::npos) << n << "\n" << r.output;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, ValidSampleValidates) {
+  const Result r = run_upf("validate " + (fs::path(UPF_SOURCE_DIR) / "samples" / "dam_break.json").string());
+  EXPECT_EQ(r.code, 0) << r.output;
+}
+
+TEST_F(Cli, UnknownKeyNamesPathAndSuggestion) {
+  auto doc = sample();
+  doc["materials"]["water"]["viscosty"] = 0.01;
+  expect_rejected(doc, {"/materials/water/viscosty", "did you mean 'viscosity'"});
+}
+
+TEST_F(Cli, WrongTypeNamesPath) {
+  auto doc = sample();
+  doc["time"]["end"] = "two seconds";
+  expect_rejected(doc, {"/time/end", "expected a number"});
+}
+
+TEST_F(Cli, NonPositiveSpacingAndDensityAreRejectedTogether) {
+  auto doc = sample();
+  doc["particle_spacing"] = -0.01;
+  doc["materials"]["water"]["density"] = 0;
+  expect_rejected(doc, {"/particle_spacing", "/materials/water/density", "out of range"});
+}
+
+TEST_F(Cli, FluidBlockOutsideContainer) {
+  auto doc = sample();
+  doc["fluid_blocks"][0]["max"] = {2.0, 0.8, 0.4};
+  expect_rejected(doc, {"/fluid_blocks/0", "not inside any container"});
+}
+
+TEST_F(Cli, TooManyParticlesForMemory) {
+  auto doc = sample();
+  doc["particle_spacing"] = 1e-5;
+  doc["containers"][0]["layers"] = 1;
+  expect_rejected(doc, {"/particle_spacing", "particles", "GiB"});
+}
+
+TEST_F(Cli, OutOfRangeSolverParameter) {
+  auto doc = sample();
+  doc["materials"]["water"]["solver"]["eta"] = 2.0;
+  expect_rejected(doc, {"/materials/water/solver/eta", "[1e-06, 0.5]"});
+}
+
+TEST_F(Cli, MissingFileAndBrokenJson) {
+  Result r = run_upf("validate " + (dir_ / "nope.json").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("nope.json: no such file"), std::string::npos) << r.output;
+  const fs::path broken = dir_ / "broken.json";
+  std::ofstream(broken) << "{\n  \"particle_spacing\": 0.02,\n  \"materials\": {,\n}";
+  r = run_upf("run " + broken.string() + " --out " + (dir_ / "o").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("broken.json:3:"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, RunWritesOutputs) {
+  auto doc = sample();
+  doc["time"]["end"] = 0.1;
+  const fs::path out = dir_ / "out";
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " --threads 2 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"particles.pvd", "metrics.csv", "probes.csv", "summary.json",
+                        "frames/frame_00000.vtp", "frames/frame_00003.vtp"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  std::ifstream summary(out / "summary.json");
+  const auto s = nlohmann::json::parse(summary);
+  EXPECT_EQ(s["status"], "completed");
+  EXPECT_NEAR(s["simulated_time_s"].get<double>(), 0.1, 1e-9);
+}
+
+TEST_F(Cli, InstabilityExitsThreeAfterWritingLastGoodFrame) {
+  auto doc = sample();
+  doc["stability"]["max_speed"] = 0.5;  // the falling column exceeds it within ~0.05 s
+  const fs::path out = dir_ / "out";
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " -q");
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_NE(r.output.find("particle id"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("speed"), std::string::npos) << r.output;
+  std::ifstream summary(out / "summary.json");
+  const auto s = nlohmann::json::parse(summary);
+  EXPECT_EQ(s["status"], "unstable");
+  EXPECT_TRUE(fs::exists(out / "frames/frame_00001.vtp")) << "the last good frame";
+}
+
+TEST_F(Cli, InfoListsSolverParametersWithUnitsAndRanges) {
+  const Result r = run_upf("info");
+  EXPECT_EQ(r.code, 0);
+  for (const char* s : {"pcisph", "eta", "liquid", "frozen", "kg/m^3", "range"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s;
+}
+
+}  // namespace
