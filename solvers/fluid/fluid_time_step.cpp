@@ -19,10 +19,27 @@ Real max_liquid_speed_squared(const Particles& particles, const CpuExecutor& exe
   return vmax2;
 }
 
-Real fluid_cfl_time_step(const World& world, Real max_viscosity) {
+Real free_fall_speed(const World& world) {
+  const Vec3 g = world.settings().gravity;
+  const Real g_norm = norm(g);
+  if (g_norm <= 0) return 0;
+  const Vec3 down = g / g_norm;
+  const Particles& p = world.particles();
+  Real lo = std::numeric_limits<Real>::max(), hi = std::numeric_limits<Real>::lowest();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.type[i] != ParticleType::Liquid) continue;
+    const Real d = dot(p.position[i], down);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+  return hi > lo ? std::sqrt(Real(2) * g_norm * (hi - lo)) : Real(0);
+}
+
+Real fluid_cfl_time_step(const World& world, Real max_viscosity, Real reference_speed) {
   const auto& s = world.settings();
   Real dt = std::numeric_limits<Real>::max();
-  const Real vmax = std::sqrt(max_liquid_speed_squared(world.particles(), world.executor()));
+  const Real vmax = std::max(
+      reference_speed, std::sqrt(max_liquid_speed_squared(world.particles(), world.executor())));
   if (vmax > 0) dt = Real(s.time.cfl) * s.spacing / vmax;
   if (max_viscosity > 0) {
     const Real h = s.support_radius();

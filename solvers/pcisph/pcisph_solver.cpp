@@ -59,11 +59,12 @@ void PcisphSolver::prepare(World& world) {
   table_.load(world);
   max_viscosity_ = 0;
   for (MaterialId m : materials_) max_viscosity_ = std::max(max_viscosity_, table_.viscosity[m]);
+  reference_speed_ = free_fall_speed(world);
   delta_scale_ = template_delta_scale(world.settings().spacing, world.kernel());
 }
 
 Real PcisphSolver::max_time_step(const World& world) const {
-  return fluid_cfl_time_step(world, max_viscosity_);
+  return fluid_cfl_time_step(world, max_viscosity_, reference_speed_);
 }
 
 void PcisphSolver::step(World& world, Real dt) {

@@ -42,6 +42,7 @@ class PcisphSolver final : public Solver {
   FluidNeighbourHandles lists_;
   double delta_scale_ = 0;  // [kg^2/m^6 ... ] delta = delta_scale_ / dt^2 (per unit mass ratio)
   Real max_viscosity_ = 0;
+  Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
 };
 
