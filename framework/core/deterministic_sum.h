@@ -25,7 +25,7 @@ double fixed_point_sum(const CpuExecutor& exec, std::size_t n, Value&& value,
   std::int64_t total = 0;
 #pragma omp parallel for schedule(static) reduction(+ : total) num_threads(exec.threads())
   for (std::int64_t i = 0; i < count; ++i)
-    total += static_cast<std::int64_t>(std::llround(double(value(std::size_t(i))) * scale));
+    total += static_cast<std::int64_t>(std::nearbyint(double(value(std::size_t(i))) * scale));
   return double(total) / scale;
 }
 

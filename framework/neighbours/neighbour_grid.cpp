@@ -35,12 +35,16 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
   const Vec3* x = particles.position.data();
   const std::int64_t count = static_cast<std::int64_t>(n);
   Real lx = lo[0], ly = lo[1], lz = lo[2];
+  Real hx = -lo[0], hy = -lo[1], hz = -lo[2];
 #pragma omp parallel for schedule(static) num_threads(exec.threads()) \
-    reduction(min : lx, ly, lz)
+    reduction(min : lx, ly, lz) reduction(max : hx, hy, hz)
   for (std::int64_t i = 0; i < count; ++i) {
     lx = std::min(lx, x[i].x);
     ly = std::min(ly, x[i].y);
     lz = std::min(lz, x[i].z);
+    hx = std::max(hx, x[i].x);
+    hy = std::max(hy, x[i].y);
+    hz = std::max(hz, x[i].z);
   }
   // One empty cell below the lowest particle, so that "cell - 1" never wraps.
   origin_ = n ? Vec3{lx - cell_size_, ly - cell_size_, lz - cell_size_} : Vec3{};
@@ -68,6 +72,30 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
     }
   }
   cell_begin_.push_back(std::uint32_t(n));
+  // A dense cell table over the bounding box when it is not much larger than the particle count
+  // (tanks, blocks): O(1) cell lookups. Sparse clouds fall back to binary search of the keys.
+  dense_.clear();
+  if (n) {
+    const Vec3 hi{hx, hy, hz};
+    double cells = 1;
+    for (int a = 0; a < 3; ++a) {
+      std::uint32_t c[3];
+      cell_coords(hi, c);
+      dims_[a] = c[a] + 2;  // one empty cell above the highest particle too
+      cells *= double(dims_[a]);
+    }
+    if (cells <= 8.0 * double(n) + 4096.0) {
+      dense_.assign(std::size_t(cells), 0);
+      for (std::size_t c = 0; c < cell_keys_.size(); ++c) {
+        const std::uint64_t k = cell_keys_[c];
+        const std::size_t linear =
+            compact_bits_3d(k) +
+            std::size_t(dims_[0]) * (compact_bits_3d(k >> 1) +
+                                     std::size_t(dims_[1]) * compact_bits_3d(k >> 2));
+        dense_[linear] = std::uint32_t(c + 1);
+      }
+    }
+  }
   sorted_x_.resize(n);
   sorted_type_.resize(n);
   exec.for_each(n, [&](std::size_t s) {
@@ -118,11 +146,24 @@ int NeighbourGrid::neighbour_cells(std::size_t cell, CellRange ranges[27]) const
         if (nx < 0 || ny < 0 || nz < 0 || nx > kMortonAxisMax || ny > kMortonAxisMax ||
             nz > kMortonAxisMax)
           continue;
-        const std::uint64_t k = morton_key(std::uint32_t(nx), std::uint32_t(ny), std::uint32_t(nz));
-        auto it = std::lower_bound(cell_keys_.begin(), cell_keys_.end(), k);
-        if (it == cell_keys_.end() || *it != k) continue;
-        const std::size_t j = std::size_t(it - cell_keys_.begin());
-        ranges[found++] = {cell_begin_[j], cell_begin_[j + 1]};
+        std::size_t j;
+        if (!dense_.empty()) {
+          if (nx >= dims_[0] || ny >= dims_[1] || nz >= dims_[2]) continue;
+          const std::uint32_t slot =
+              dense_[std::size_t(nx) + std::size_t(dims_[0]) *
+                                           (std::size_t(ny) + std::size_t(dims_[1]) * std::size_t(nz))];
+          if (slot == 0) continue;
+          j = slot - 1;
+        } else {
+          const std::uint64_t k =
+              morton_key(std::uint32_t(nx), std::uint32_t(ny), std::uint32_t(nz));
+          auto it = std::lower_bound(cell_keys_.begin(), cell_keys_.end(), k);
+          if (it == cell_keys_.end() || *it != k) continue;
+          j = std::size_t(it - cell_keys_.begin());
+        }
+        ranges[found++] = {cell_begin_[j],
+                           cell_begin_[j + 1],
+                           {std::int8_t(dx), std::int8_t(dy), std::int8_t(dz)}};
       }
   return found;
 }
@@ -147,13 +188,17 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
   // One pass: each thread appends its particles' neighbours to its own buffers and records where
   // they are; the final CSR arrays are then assembled by copying. A particle's neighbours are
   // found by one thread in a fixed order, so the result does not depend on the thread count.
-  struct Segment {
-    std::uint32_t particle, begin;
-  };
   const int threads = exec.threads();
-  std::vector<std::vector<std::vector<std::uint32_t>>> buffers(
-      static_cast<std::size_t>(threads), std::vector<std::vector<std::uint32_t>>(lists));
-  std::vector<std::vector<Segment>> segments(std::size_t(threads) * lists);
+  // Scratch kept between calls: no allocation (and no page faults) in the steady state.
+  auto& buffers = scratch_.buffers;
+  auto& segments = scratch_.segments;
+  buffers.resize(static_cast<std::size_t>(threads));
+  for (auto& b : buffers) {
+    b.resize(lists);
+    for (auto& l : b) l.clear();
+  }
+  segments.resize(static_cast<std::size_t>(threads) * lists);
+  for (auto& seg : segments) seg.clear();
   for (NeighbourList* out : outs) out->offsets.assign(n + 1, 0);
 
   const std::int64_t cells = std::int64_t(cell_keys_.size());
@@ -171,20 +216,39 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
       if (!any_query) continue;
       CellRange ranges[27];
       const int found = neighbour_cells(std::size_t(cell), ranges);
+      const std::uint64_t key = cell_keys_[std::size_t(cell)];
+      const double cell_lo[3] = {
+          double(origin_.x) + double(compact_bits_3d(key)) * double(cell_size_),
+          double(origin_.y) + double(compact_bits_3d(key >> 1)) * double(cell_size_),
+          double(origin_.z) + double(compact_bits_3d(key >> 2)) * double(cell_size_)};
       for (std::uint32_t s = first; s < last; ++s) {
         if (!in_mask(query, sorted_type_[s])) continue;
         const std::uint32_t i = sorted_[s];
         for (std::size_t l = 0; l < lists; ++l)
           segments[t * lists + l].push_back({i, std::uint32_t(my_buffers[l].size())});
         const Vec3 xi = sorted_x_[s];
-        for (int c = 0; c < found; ++c)
-          for (std::uint32_t u = ranges[c].begin; u < ranges[c].end; ++u) {
-            const ParticleType tj = sorted_type_[u];
-            if (u == s || !in_mask(any_target, tj)) continue;
-            if (!(squared_norm(xi - sorted_x_[u]) < r2)) continue;
-            for (std::size_t l = 0; l < lists; ++l)
-              if (in_mask(targets[l], tj)) my_buffers[l].push_back(sorted_[u]);
+        // Corner and edge cells farther than the radius from this particle are skipped (about a
+        // quarter of the candidates); the margin keeps the test conservative under round-off.
+        double u[3];
+        for (int a = 0; a < 3; ++a) u[a] = double(xi[a]) - cell_lo[a];
+        const double skip2 = double(r2) * (1.0 + 1e-5) + 1e-30;
+        for (int c = 0; c < found; ++c) {
+          double gap2 = 0;
+          for (int a = 0; a < 3; ++a) {
+            const int d = ranges[c].offset[a];
+            const double gap = d > 0 ? double(cell_size_) - u[a] : (d < 0 ? u[a] : 0.0);
+            if (d != 0 && gap > 0) gap2 += gap * gap;
           }
+          if (gap2 >= skip2) continue;
+          for (std::uint32_t u2 = ranges[c].begin; u2 < ranges[c].end; ++u2) {
+            // Distance first: contiguous reads; the type is only looked at for hits.
+            if (!(squared_norm(xi - sorted_x_[u2]) < r2) || u2 == s) continue;
+            const ParticleType tj = sorted_type_[u2];
+            if (!in_mask(any_target, tj)) continue;
+            for (std::size_t l = 0; l < lists; ++l)
+              if (in_mask(targets[l], tj)) my_buffers[l].push_back(sorted_[u2]);
+          }
+        }
       }
     }
   }

@@ -44,6 +44,7 @@ class NeighbourGrid {
  private:
   struct CellRange {
     std::uint32_t begin, end;
+    std::int8_t offset[3];  // the neighbour cell relative to the particle's cell
   };
   std::uint64_t key_of(const Vec3& x) const;
   void cell_coords(const Vec3& x, std::uint32_t c[3]) const;
@@ -60,6 +61,17 @@ class NeighbourGrid {
   std::vector<std::uint32_t> cell_begin_;  // into sorted_, size cell_count()+1
   // Positions and types gathered in sorted order, so candidate scans read contiguous memory.
   std::vector<Vec3> sorted_x_;
+  std::vector<std::uint32_t> dense_;  // cell slot + 1 by linear cell index; empty when sparse
+  std::int64_t dims_[3] = {0, 0, 0};
+  // Per-thread result buffers of find_neighbours, reused from call to call.
+  struct Segment {
+    std::uint32_t particle, begin;
+  };
+  struct Scratch {
+    std::vector<std::vector<std::vector<std::uint32_t>>> buffers;  // [thread][list]
+    std::vector<std::vector<Segment>> segments;                    // [thread * lists + list]
+  };
+  mutable Scratch scratch_;
   std::vector<ParticleType> sorted_type_;
 };
 

@@ -6,10 +6,12 @@
 namespace upf::cuda {
 
 __global__ void fluid_compile_check(FluidView f, const Real* density, const Real* pressure,
-                                    Vec3* out, std::uint32_t n) {
+                                    Vec3* gradients, Vec3* out, std::uint32_t n) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= n) return;
-  out[i] = viscosity_acceleration(f, density, i) + pcisph_pressure_acceleration(f, pressure, i);
+  const Vec3 boundary = store_gradients(f, gradients, i);
+  out[i] = viscosity_acceleration(f, density, gradients, i) +
+           pcisph_pressure_acceleration(f, pressure, gradients, boundary, i);
   out[i].x += fluid_density(f, f.x, i);
 }
 

@@ -29,8 +29,24 @@ UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32
   return rho;
 }
 
+// Kernel gradients at the current positions, computed once a step and reused by every force
+// that needs them: grad W_ij into fluid_gradient[k] for each fluid-list slot k of i, and the
+// returned boundary sum sum_b V_b grad W_ib.
+UPF_HD inline Vec3 store_gradients(const FluidView& f, Vec3* fluid_gradient, std::uint32_t i) {
+  const Vec3 xi = f.x[i];
+  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k)
+    fluid_gradient[k] = f.kernel.gradient(xi - f.x[f.fluid.indices[k]]);
+  Vec3 boundary{};
+  for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
+    const std::uint32_t b = f.boundary.indices[k];
+    boundary += f.kernel.gradient(xi - f.x[b]) * f.boundary_volume[b];
+  }
+  return boundary;
+}
+
+// `fluid_gradient` as filled by store_gradients for this step.
 UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* density,
-                                          std::uint32_t i) {
+                                          const Vec3* fluid_gradient, std::uint32_t i) {
   const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
   const Vec3 xi = f.x[i];
   const Vec3 vi = f.v[i];
@@ -41,7 +57,7 @@ UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* densit
       const std::uint32_t j = f.fluid.indices[k];
       const Vec3 xij = xi - f.x[j];
       const Real vx = dot(vi - f.v[j], xij);
-      a += f.kernel.gradient(xij) *
+      a += fluid_gradient[k] *
            (f.mass[j] / density[j] * vx / (squared_norm(xij) + Real(0.01) * h2));
     }
     a *= Real(10) * nu;

@@ -13,23 +13,21 @@ namespace upf {
 // The boundary term takes the fluid particle's own pressure (Akinci's eq. 10). The symmetric
 // "mirrored" variant with 2 p_i drove the correction loop into slow, oscillating convergence next
 // to walls (73 iterations on the first step of the hydrostatic tank instead of 3).
+// `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from store_gradients: the
+// positions do not move during the correction loop, so neither do the gradients.
 UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* pressure,
-                                                std::uint32_t i) {
+                                                const Vec3* fluid_gradient,
+                                                const Vec3& boundary_gradient, std::uint32_t i) {
   const Real rho0 = f.rest_density[f.material[i]];
   const Real pi = pressure[i] / (rho0 * rho0);
-  const Vec3 xi = f.x[i];
   Vec3 a{};
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
     const Real rho0j = f.rest_density[f.material[j]];
-    a -= f.kernel.gradient(xi - f.x[j]) * (f.mass[j] * (pi + pressure[j] / (rho0j * rho0j)));
+    a -= fluid_gradient[k] * (f.mass[j] * (pi + pressure[j] / (rho0j * rho0j)));
   }
-  if (pi > 0) {
-    for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
-      const std::uint32_t b = f.boundary.indices[k];
-      a -= f.kernel.gradient(xi - f.x[b]) * (rho0 * f.boundary_volume[b] * pi);
-    }
-  }
+  // Psi_b p_i / rho0^2 = V_b rho0 p_i / rho0^2.
+  a -= boundary_gradient * (rho0 * pi);
   return a;
 }
 

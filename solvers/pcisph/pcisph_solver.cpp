@@ -51,9 +51,9 @@ void PcisphSolver::prepare(World& world) {
   p.scalar_field("density", 0, true);
   p.scalar_field("pressure", 0, true);
   p.vector_field("pcisph.predicted_position");
-  p.vector_field("pcisph.predicted_velocity");
   p.vector_field("pcisph.pressure_acceleration");
   p.vector_field("pcisph.other_acceleration");
+  p.vector_field("pcisph.boundary_gradient");
   p.scalar_field("pcisph.predicted_density");
   lists_.request(world);
   table_.load(world);
@@ -79,21 +79,26 @@ void PcisphSolver::step(World& world, Real dt) {
   Real* pressure = p.scalar_field("pressure").data();
   Real* rho_star = p.scalar_field("pcisph.predicted_density").data();
   Vec3* x_star = p.vector_field("pcisph.predicted_position").data();
-  Vec3* v_star = p.vector_field("pcisph.predicted_velocity").data();
   Vec3* a_p = p.vector_field("pcisph.pressure_acceleration").data();
   Vec3* a_other = p.vector_field("pcisph.other_acceleration").data();
+  Vec3* boundary_gradient = p.vector_field("pcisph.boundary_gradient").data();
+  fluid_gradient_.resize(world.neighbours(lists_.fluid).total());
+  Vec3* fluid_gradient = fluid_gradient_.data();
   auto is_fluid = [&](std::size_t i) { return type[i] == ParticleType::Liquid; };
 
   Stopwatch watch;
   stats_ = SolverStats{};
 
-  // Non-pressure forces: density at the current positions, then gravity + viscosity.
+  // Non-pressure forces: density and kernel gradients at the current positions, then gravity +
+  // viscosity.
   exec.for_each(n, [&](std::size_t i) {
-    if (is_fluid(i)) density[i] = fluid_density(f, f.x, std::uint32_t(i));
+    if (!is_fluid(i)) return;
+    density[i] = fluid_density(f, f.x, std::uint32_t(i));
+    boundary_gradient[i] = store_gradients(f, fluid_gradient, std::uint32_t(i));
   });
   exec.for_each(n, [&](std::size_t i) {
     if (!is_fluid(i)) return;
-    a_other[i] = g + viscosity_acceleration(f, density, std::uint32_t(i));
+    a_other[i] = g + viscosity_acceleration(f, density, fluid_gradient, std::uint32_t(i));
     pressure[i] = 0;
     a_p[i] = Vec3{};
   });
@@ -107,8 +112,8 @@ void PcisphSolver::step(World& world, Real dt) {
   while (iteration < max_iterations_) {
     exec.for_each(n, [&](std::size_t i) {
       if (!is_fluid(i)) return;
-      v_star[i] = f.v[i] + (a_other[i] + a_p[i]) * dt;
-      x_star[i] = f.x[i] + v_star[i] * dt;
+      const Vec3 v_star = f.v[i] + (a_other[i] + a_p[i]) * dt;
+      x_star[i] = f.x[i] + v_star * dt;
     });
     exec.for_each(n, [&](std::size_t i) {
       if (!is_fluid(i)) return;
@@ -124,7 +129,9 @@ void PcisphSolver::step(World& world, Real dt) {
     });
     avg_error = fluid_count ? error_sum / double(fluid_count) : 0.0;
     exec.for_each(n, [&](std::size_t i) {
-      if (is_fluid(i)) a_p[i] = pcisph_pressure_acceleration(f, pressure, std::uint32_t(i));
+      if (is_fluid(i))
+        a_p[i] = pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i],
+                                              std::uint32_t(i));
     });
     ++iteration;
     if (iteration >= min_iterations_ && avg_error <= eta_) break;

@@ -44,6 +44,7 @@ class PcisphSolver final : public Solver {
   Real max_viscosity_ = 0;
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
+  std::vector<Vec3> fluid_gradient_;  // grad W_ij per fluid-list slot, for the current step
 };
 
 }  // namespace upf
