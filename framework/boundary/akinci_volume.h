@@ -12,26 +12,19 @@
 
 namespace upf {
 
-// Name of an optional per-particle field that scales the Akinci volume (see wall_volume_scale).
-inline constexpr const char* kBoundaryVolumeScaleField = "boundary.volume_scale";
+// Name of an optional per-particle field holding the known volume of a boundary particle
+// (0 where unknown). Container walls are regular lattices of two or more layers: their volume is
+// the lattice cell, the value 1/sum W_bk takes inside a complete lattice. Akinci's sum over the
+// sampled wall alone misses the neighbours on the fluid side: 18 % too large on flat walls (two
+// layers, cubic spline, H = 2 spacings), too small along edges and corners, where fluid then
+// packed closer and stayed 3.9 % compressed in the hydrostatic tank.
+inline constexpr const char* kKnownBoundaryVolumeField = "boundary.known_volume";
 
 // Writes boundary_volume for every particle of a type in `boundary` from `boundary_neighbours`
-// (a list of boundary -> boundary neighbours, self excluded), times the particle's
-// kBoundaryVolumeScaleField value when that field exists.
+// (a list of boundary -> boundary neighbours, self excluded), or the particle's
+// kKnownBoundaryVolumeField value where that field exists and is positive.
 void compute_boundary_volumes(Particles& particles, TypeMask boundary,
                               const NeighbourList& boundary_neighbours,
                               const CubicSplineKernel& kernel, const CpuExecutor& exec);
-
-}  // namespace upf
-
-namespace upf {
-
-// The fluid-facing layer of a sampled wall has no boundary neighbours on its fluid side, so
-// 1/sum W overestimates its volume (by 18 % for two lattice layers with the cubic spline at
-// H = 2 spacings), and fluid resting against the wall would start 2.6 % compressed. This factor
-// rescales the Akinci volumes of a flat lattice wall of `layers` layers so that a fluid particle
-// one spacing from it sees exactly the missing half of its neighbourhood:
-//   gamma = sum_{fluid side missing} W dx^3 / sum_{wall particles} V_b W.
-Real wall_volume_scale(const CubicSplineKernel& kernel, Real spacing, int layers);
 
 }  // namespace upf

@@ -52,10 +52,12 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
   for (const auto& c : scene.containers) {
     const std::size_t first = p.size();
     add_container_walls(p, c.box, h, c.layers, *world->materials().find(c.material));
-    // Flat lattice walls: correct the Akinci volumes of the one-sided fluid-facing layer.
-    auto& scale = p.scalar_field(kBoundaryVolumeScaleField, Real(1));
-    const Real gamma = wall_volume_scale(world->kernel(), h, c.layers);
-    for (std::size_t i = first; i < p.size(); ++i) scale[i] = gamma;
+    // Lattice walls have a known volume per particle: the (slightly stretched) lattice cell.
+    auto& known = p.scalar_field(kKnownBoundaryVolumeField, Real(0));
+    const Lattice n = wall_lattice_size(c.box, h);
+    double cell = 1;
+    for (int a = 0; a < 3; ++a) cell *= (c.box.max[a] - c.box.min[a]) / double(n[a]);
+    for (std::size_t i = first; i < p.size(); ++i) known[i] = Real(cell);
   }
   for (const auto& b : scene.fluid_blocks) {
     const MaterialId id = *world->materials().find(b.material);

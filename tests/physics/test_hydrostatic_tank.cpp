@@ -1,4 +1,4 @@
-// Hydrostatic tank with PCISPH (samples/hydrostatic_tank.json): water at rest must hold the
+// Hydrostatic tank with PCISPH (samples/hydrostatic_tank.json, eta = 0.5 %): water at rest must hold the
 // hydrostatic pressure p = rho0 g d at depth d (Pascal's law), stay nearly incompressible
 // (Solenthaler & Pajarola 2009: average compression below eta), come to rest, and stay inside the
 // tank (Akinci et al. 2012 boundaries).
@@ -38,9 +38,7 @@ TEST(HydrostaticTank, PcisphHoldsHydrostaticPressureAtRest) {
   // compression of the SPH density at the particles' positions.
   const SolverStats stats = w.last_step().solver;
   const auto& density = *p.find_scalar("density");
-  // Known limitation: where two walls meet (tank edges and corners) the Akinci volumes of the
-  // edge particles are smaller than a flat wall's, the boundary is softer and the fluid packs a
-  // little closer: those particles get a looser bound, reported separately.
+  // Reported apart for the tank edges and corners, where compression is largest.
   const double support = tw.scene.world.support_radius();
   auto walls_within_support = [&](const Vec3& x) {
     int walls = 0;
@@ -62,8 +60,7 @@ TEST(HydrostaticTank, PcisphHoldsHydrostaticPressureAtRest) {
   std::printf("avg density error %.5f, max %.5f (at tank edges %.5f), iterations %d\n",
               stats.avg_density_error, max_error, max_error_edges, stats.iterations);
   EXPECT_LT(stats.avg_density_error, eta);
-  EXPECT_LT(max_error, 0.03);
-  EXPECT_LT(max_error_edges, 0.05);
+  EXPECT_LT(std::max(max_error, max_error_edges), 0.03);
 
   // Free surface: mean height of the top particles + half a spacing.
   double top = 0, v2 = 0;
