@@ -19,20 +19,36 @@ class CubicSplineKernel {
 
   UPF_HD Real support_radius() const { return h_; }
 
+  // Support tests compare r with H, not q with 1: r * (1/H) can round below 1 at r = H.
   UPF_HD Real value(Real r) const {
+    if (r >= h_) return 0;
     const Real q = r * inv_h_;
-    if (q > Real(1)) return 0;
     if (q <= Real(0.5)) return k_ * (Real(6) * q * q * q - Real(6) * q * q + Real(1));
     const Real a = Real(1) - q;
     return k_ * Real(2) * a * a * a;
   }
   UPF_HD Real value(const Vec3& r) const { return value(norm(r)); }
 
+  // Value and gradient together (one square root), for loops that need both.
+  UPF_HD Real value_and_gradient(const Vec3& r, Vec3& gradient) const {
+    const Real rl = norm(r);
+    gradient = Vec3{};
+    if (rl >= h_) return 0;
+    const Real q = rl * inv_h_;
+    if (q <= Real(0.5)) {
+      if (rl > Real(1e-9) * h_) gradient = r * (l_ * q * (Real(3) * q - Real(2)) / (rl * h_));
+      return k_ * (Real(6) * q * q * q - Real(6) * q * q + Real(1));
+    }
+    const Real a = Real(1) - q;
+    gradient = r * (-l_ * a * a / (rl * h_));
+    return k_ * Real(2) * a * a * a;
+  }
+
   // Gradient with respect to the first particle's position, r = x_i - x_j.
   UPF_HD Vec3 gradient(const Vec3& r) const {
     const Real rl = norm(r);
+    if (rl >= h_ || rl <= Real(1e-9) * h_) return {};
     const Real q = rl * inv_h_;
-    if (q > Real(1) || rl <= Real(1e-9) * h_) return {};
     const Vec3 dir = r / (rl * h_);  // grad q = r / (|r| H)
     if (q <= Real(0.5)) return dir * (l_ * q * (Real(3) * q - Real(2)));
     const Real a = Real(1) - q;

@@ -53,7 +53,9 @@ class MullerKernels {
   UPF_HD Real viscosity(Real r) const {
     if (r > h_ || r <= Real(0)) return 0;
     const Real q = r / h_;
-    return viscosity_value_ * (-q * q * q / Real(2) + q * q + Real(1) / (Real(2) * q) - Real(1));
+    // -q^3/2 + q^2 + 1/(2q) - 1 = (1-q)^3 (1+q) / (2q): the factored form keeps its digits near H.
+    const Real a = Real(1) - q;
+    return viscosity_value_ * a * a * a * (Real(1) + q) / (Real(2) * q);
   }
   UPF_HD Real viscosity_laplacian(Real r) const {
     if (r > h_) return 0;

@@ -17,7 +17,9 @@ void NeighbourGrid::cell_coords(const Vec3& x, std::uint32_t c[3]) const {
   for (int a = 0; a < 3; ++a) {
     // Far-away particles are clamped into the last cell: lists stay exact (distances are checked),
     // only slower, and the instability check stops such runs long before.
-    const double cell = std::floor(double(x[a] - origin_[a]) / double(cell_size_));
+    // In double: x - origin in float could round a particle into the cell after next when the
+    // origin is far away, and a neighbour closer than the radius would be missed.
+    const double cell = std::floor((double(x[a]) - double(origin_[a])) / double(cell_size_));
     c[a] = static_cast<std::uint32_t>(std::clamp(cell, 0.0, double(kMortonAxisMax - 1)));
   }
 }

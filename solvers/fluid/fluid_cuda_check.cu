@@ -9,10 +9,11 @@ __global__ void fluid_compile_check(FluidView f, const Real* density, const Real
                                     Vec3* gradients, Vec3* out, std::uint32_t n) {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= n) return;
-  const Vec3 boundary = store_gradients(f, gradients, i);
+  Vec3 boundary;
+  const Real rho = density_and_gradients(f, gradients, boundary, i);
   out[i] = viscosity_acceleration(f, density, gradients, i) +
            pcisph_pressure_acceleration(f, pressure, gradients, boundary, i);
-  out[i].x += fluid_density(f, f.x, i);
+  out[i].x += fluid_density(f, f.x, i) + rho;
 }
 
 }  // namespace upf::cuda

@@ -29,22 +29,32 @@ UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32
   return rho;
 }
 
-// Kernel gradients at the current positions, computed once a step and reused by every force
-// that needs them: grad W_ij into fluid_gradient[k] for each fluid-list slot k of i, and the
-// returned boundary sum sum_b V_b grad W_ib.
-UPF_HD inline Vec3 store_gradients(const FluidView& f, Vec3* fluid_gradient, std::uint32_t i) {
+// Density at the current positions and the kernel gradients there, in one pass: grad W_ij goes
+// into fluid_gradient[k] for each fluid-list slot k of i and sum_b V_b grad W_ib into
+// boundary_gradient. The gradients are reused by every force of the step.
+UPF_HD inline Real density_and_gradients(const FluidView& f, Vec3* fluid_gradient,
+                                         Vec3& boundary_gradient, std::uint32_t i) {
   const Vec3 xi = f.x[i];
-  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k)
-    fluid_gradient[k] = f.kernel.gradient(xi - f.x[f.fluid.indices[k]]);
+  Real rho = f.mass[i] * f.kernel.value(Real(0));
+  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+    const std::uint32_t j = f.fluid.indices[k];
+    rho += f.mass[j] * f.kernel.value_and_gradient(xi - f.x[j], fluid_gradient[k]);
+  }
+  const Real rho0 = f.rest_density[f.material[i]];
   Vec3 boundary{};
+  Real boundary_density = 0;
   for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
     const std::uint32_t b = f.boundary.indices[k];
-    boundary += f.kernel.gradient(xi - f.x[b]) * f.boundary_volume[b];
+    Vec3 g;
+    const Real w = f.kernel.value_and_gradient(xi - f.x[b], g);
+    boundary += g * f.boundary_volume[b];
+    boundary_density += f.boundary_volume[b] * w;
   }
-  return boundary;
+  boundary_gradient = boundary;
+  return rho + rho0 * boundary_density;
 }
 
-// `fluid_gradient` as filled by store_gradients for this step.
+// `fluid_gradient` as filled by density_and_gradients for this step.
 UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* density,
                                           const Vec3* fluid_gradient, std::uint32_t i) {
   const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();

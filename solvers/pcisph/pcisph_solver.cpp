@@ -93,8 +93,8 @@ void PcisphSolver::step(World& world, Real dt) {
   // viscosity.
   exec.for_each(n, [&](std::size_t i) {
     if (!is_fluid(i)) return;
-    density[i] = fluid_density(f, f.x, std::uint32_t(i));
-    boundary_gradient[i] = store_gradients(f, fluid_gradient, std::uint32_t(i));
+    density[i] =
+        density_and_gradients(f, fluid_gradient, boundary_gradient[i], std::uint32_t(i));
   });
   exec.for_each(n, [&](std::size_t i) {
     if (!is_fluid(i)) return;
