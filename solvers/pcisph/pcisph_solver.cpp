@@ -57,6 +57,8 @@ void PcisphSolver::prepare(World& world) {
   p.scalar_field("pcisph.predicted_density");
   lists_.request(world);
   table_.load(world);
+  owns_.assign(world.materials().size(), 0);
+  for (MaterialId m : materials_) owns_[m] = 1;
   max_viscosity_ = 0;
   for (MaterialId m : materials_) max_viscosity_ = std::max(max_viscosity_, table_.viscosity[m]);
   reference_speed_ = free_fall_speed(world);
@@ -84,54 +86,57 @@ void PcisphSolver::step(World& world, Real dt) {
   Vec3* boundary_gradient = p.vector_field("pcisph.boundary_gradient").data();
   fluid_gradient_.resize(world.neighbours(lists_.fluid).total());
   Vec3* fluid_gradient = fluid_gradient_.data();
-  auto is_fluid = [&](std::size_t i) { return type[i] == ParticleType::Liquid; };
+  // The particles this solver moves, as an index list: loops over it split evenly between
+  // threads (a static split of all particles did not: walls and water sit in different parts of
+  // the Morton order, and one thread waited for the other).
+  mine_.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (type[i] == ParticleType::Liquid && owns_[p.material[i]]) mine_.push_back(std::uint32_t(i));
+  const std::uint32_t* mine = mine_.data();
+  auto for_mine = [&](auto&& body) {
+    exec.for_each(mine_.size(), [&](std::size_t k) { body(mine[k]); });
+  };
 
   Stopwatch watch;
   stats_ = SolverStats{};
 
   // Non-pressure forces: density and kernel gradients at the current positions, then gravity +
   // viscosity.
-  exec.for_each(n, [&](std::size_t i) {
-    if (!is_fluid(i)) return;
-    density[i] =
-        density_and_gradients(f, fluid_gradient, boundary_gradient[i], std::uint32_t(i));
+  for_mine([&](std::uint32_t i) {
+    density[i] = density_and_gradients(f, fluid_gradient, boundary_gradient[i], i);
   });
-  exec.for_each(n, [&](std::size_t i) {
-    if (!is_fluid(i)) return;
-    a_other[i] = g + viscosity_acceleration(f, density, fluid_gradient, std::uint32_t(i));
+  for_mine([&](std::uint32_t i) {
+    a_other[i] = g + viscosity_acceleration(f, density, fluid_gradient, i);
     pressure[i] = 0;
     a_p[i] = Vec3{};
   });
   stats_.stage_ms.emplace_back("non_pressure", watch.lap_ms());
 
   // Predict-correct loop.
-  const std::size_t fluid_count = p.count(ParticleType::Liquid);
   const double delta = delta_scale_ / (double(dt) * double(dt));
   double avg_error = 0;
   int iteration = 0;
+  auto relative_error = [&](std::uint32_t i) {
+    const Real rho0 = f.rest_density[f.material[i]];
+    return (rho_star[i] - rho0) / rho0;
+  };
   while (iteration < max_iterations_) {
-    exec.for_each(n, [&](std::size_t i) {
-      if (!is_fluid(i)) return;
+    for_mine([&](std::uint32_t i) {
       const Vec3 v_star = f.v[i] + (a_other[i] + a_p[i]) * dt;
       x_star[i] = f.x[i] + v_star * dt;
     });
-    exec.for_each(n, [&](std::size_t i) {
-      if (!is_fluid(i)) return;
-      rho_star[i] = fluid_density(f, x_star, std::uint32_t(i));
+    for_mine([&](std::uint32_t i) {
+      rho_star[i] = fluid_density(f, x_star, i);
       const Real rho0 = f.rest_density[f.material[i]];
       pressure[i] = std::max(Real(0), pressure[i] + Real(delta) * (rho_star[i] - rho0));
     });
     // The stopping test sums in fixed point: the same iteration count for any thread count.
-    const double error_sum = fixed_point_sum(exec, n, [&](std::size_t i) {
-      if (!is_fluid(i)) return 0.0;
-      const double rho0 = f.rest_density[f.material[i]];
-      return std::max(0.0, (double(rho_star[i]) - rho0) / rho0);
+    const double error_sum = fixed_point_sum(exec, mine_.size(), [&](std::size_t k) {
+      return std::max(0.0, double(relative_error(mine[k])));
     });
-    avg_error = fluid_count ? error_sum / double(fluid_count) : 0.0;
-    exec.for_each(n, [&](std::size_t i) {
-      if (is_fluid(i))
-        a_p[i] = pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i],
-                                              std::uint32_t(i));
+    avg_error = mine_.empty() ? 0.0 : error_sum / double(mine_.size());
+    for_mine([&](std::uint32_t i) {
+      a_p[i] = pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i], i);
     });
     ++iteration;
     if (iteration >= min_iterations_ && avg_error <= eta_) break;
@@ -139,21 +144,16 @@ void PcisphSolver::step(World& world, Real dt) {
   stats_.iterations = iteration;
   stats_.avg_density_error = avg_error;
   Real max_error = 0;
-  const std::int64_t count = std::int64_t(n);
+  const std::int64_t count = std::int64_t(mine_.size());
 #pragma omp parallel for schedule(static) reduction(max : max_error) num_threads(exec.threads())
-  for (std::int64_t i = 0; i < count; ++i) {
-    if (!is_fluid(std::size_t(i))) continue;
-    const Real rho0 = f.rest_density[f.material[i]];
-    max_error = std::max(max_error, (rho_star[i] - rho0) / rho0);
-  }
+  for (std::int64_t k = 0; k < count; ++k) max_error = std::max(max_error, relative_error(mine[k]));
   stats_.max_density_error = double(max_error);
   stats_.stage_ms.emplace_back("pressure", watch.lap_ms());
 
   // Symplectic Euler with the final pressure forces.
   Vec3* v = p.velocity.data();
   Vec3* x = p.position.data();
-  exec.for_each(n, [&](std::size_t i) {
-    if (!is_fluid(i)) return;
+  for_mine([&](std::uint32_t i) {
     v[i] += (a_other[i] + a_p[i]) * dt;
     x[i] += v[i] * dt;
   });

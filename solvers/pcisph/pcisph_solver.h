@@ -11,6 +11,7 @@
 // solver); non-pressure forces are gravity and the shared viscosity.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "framework/params/param_spec.h"
@@ -44,7 +45,9 @@ class PcisphSolver final : public Solver {
   Real max_viscosity_ = 0;
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
-  std::vector<Vec3> fluid_gradient_;  // grad W_ij per fluid-list slot, for the current step
+  std::vector<Vec3> fluid_gradient_;
+  std::vector<std::uint8_t> owns_;    // per material: moved by this solver
+  std::vector<std::uint32_t> mine_;   // indices of the particles moved, rebuilt every step  // grad W_ij per fluid-list slot, for the current step
 };
 
 }  // namespace upf
