@@ -50,6 +50,13 @@ double World::next_time_step() const {
   return std::clamp(dt, t.dt_min, t.dt_max);
 }
 
+double World::next_time_step_until(double end) const {
+  const double remaining = end - time_;
+  const double dt = next_time_step();
+  if (remaining <= dt) return remaining;
+  return remaining / std::ceil(remaining / dt);
+}
+
 void World::update_neighbours() {
   grid_.build(particles_, executor_);
   // Requests that share a query set share one scan of the candidates.

@@ -56,6 +56,9 @@ class World {
 
   // The next step size: the fixed dt, or the minimum over solvers clamped to [dt_min, dt_max].
   double next_time_step() const;
+  // The next step towards `end`: the remaining time split into equal steps no longer than
+  // next_time_step(). A short last step would distort PCISPH pressures, which scale as 1/dt^2.
+  double next_time_step_until(double end) const;
   // Advances by dt. Throws InstabilityError (with the last good state kept) when it blows up.
   void step(double dt);
 

@@ -34,10 +34,9 @@ struct TestWorld {
     world = build_world(scene, registry, threads);
     world->prepare();
   }
-  // Steps until time t (the last step shortened to land on it).
+  // Steps until time t, landing on it with evenly split steps.
   void run_until(double t) {
-    while (world->time() < t - 1e-12)
-      world->step(std::min(world->next_time_step(), t - world->time()));
+    while (world->time() < t - 1e-12) world->step(world->next_time_step_until(t));
   }
 };
 
