@@ -2,7 +2,7 @@
 // 100k liquid particles. Prints fluid particle-steps per second, milliseconds per step by stage
 // (neighbour search, non-pressure forces, pressure loop, integration), mean pressure iterations
 // and peak memory per particle (getrusage max RSS / particles).
-//   bench_dam_break [--threads N] [--steps S] [--spacing H] [--runs R]
+//   bench_dam_break [--threads N] [--steps S] [--spacing H] [--runs R] [--reorder-every K]
 #include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
@@ -28,13 +28,14 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int threads = 2, steps = 100, runs = 3;
+  int threads = 2, steps = 100, runs = 3, reorder_every = -1;
   double spacing = 0.0125;
   CLI::App app{"PCISPH dam-break benchmark"};
   app.add_option("--threads", threads);
   app.add_option("--steps", steps, "measured steps per run (after 20 warm-up steps)");
   app.add_option("--spacing", spacing, "particle spacing in m (0.0125: 98,304 liquid particles)");
   app.add_option("--runs", runs);
+  app.add_option("--reorder-every", reorder_every, "steps between locality reorders (scene default)");
   CLI11_PARSE(app, argc, argv);
 
   upf::Registry registry;
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   std::ifstream in(std::filesystem::path(UPF_SOURCE_DIR) / "samples" / "dam_break.json");
   auto doc = nlohmann::json::parse(in);
   doc["particle_spacing"] = spacing;
+  if (reorder_every >= 0) doc["neighbours"] = {{"reorder_every", reorder_every}};
   const upf::SceneDescription scene = upf::read_scene(doc, registry, "bench");
 
   std::vector<double> rates, iterations;
