@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
   app.add_option("--steps", steps, "measured steps per run (after 20 warm-up steps)");
   app.add_option("--spacing", spacing, "particle spacing in m (0.0125: 98,304 liquid particles)");
   app.add_option("--runs", runs);
-  app.add_option("--reorder-every", reorder_every, "steps between locality reorders (scene default)");
+  app.add_option("--reorder-every", reorder_every,
+                 "steps between locality reorders (scene default)");
   CLI11_PARSE(app, argc, argv);
 
   upf::Registry registry;
@@ -74,11 +75,11 @@ int main(int argc, char** argv) {
   getrusage(RUSAGE_SELF, &usage);
   std::printf("\nPCISPH dam break, eta = 1 %%, %d threads, %zu liquid + %zu boundary particles\n",
               threads, liquid, total - liquid);
-  std::printf("median of %d runs of %d steps (after 20 warm-up steps, from t = 0):\n", runs,
-              steps);
+  std::printf("median of %d runs of %d steps (after 20 warm-up steps, from t = 0):\n", runs, steps);
   std::printf("  fluid particle-steps per second: %.3g\n", median(rates));
   std::printf("  mean pressure iterations:        %.2f\n", median(iterations));
-  for (const auto& [name, v] : stage_ms) std::printf("  %-12s %8.2f ms/step\n", name.c_str(), median(v));
+  for (const auto& [name, v] : stage_ms)
+    std::printf("  %-12s %8.2f ms/step\n", name.c_str(), median(v));
   std::printf("  peak memory: %.0f MiB, %.0f bytes per particle (all particles)\n",
               double(usage.ru_maxrss) / 1024.0, double(usage.ru_maxrss) * 1024.0 / double(total));
   return 0;

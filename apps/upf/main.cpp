@@ -12,8 +12,9 @@
 
 int main(int argc, char** argv) {
   using upf::ExitCode;
-  CLI::App app{"upf: unified particle framework (liquids, rigid bodies, granular media, frozen "
-               "boundaries in one particle world)"};
+  CLI::App app{
+      "upf: unified particle framework (liquids, rigid bodies, granular media, frozen "
+      "boundaries in one particle world)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "upf 0.1.0");
 

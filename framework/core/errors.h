@@ -31,8 +31,8 @@ class InputError : public std::runtime_error {
 // The simulation blew up: the step, the particle and the quantity that went bad. Exit code 3.
 class InstabilityError : public std::runtime_error {
  public:
-  InstabilityError(std::uint64_t step, double time, std::uint32_t particle_id,
-                   std::string quantity, double value, double limit);
+  InstabilityError(std::uint64_t step, double time, std::uint32_t particle_id, std::string quantity,
+                   double value, double limit);
   std::uint64_t step;
   double time;
   std::uint32_t particle_id;

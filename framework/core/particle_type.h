@@ -15,19 +15,27 @@ inline constexpr int kParticleTypeCount = 4;
 // A set of particle types as bit flags, used to select neighbour pairs and probe targets.
 using TypeMask = std::uint8_t;
 
-constexpr TypeMask mask_of(ParticleType t) { return TypeMask(1u << static_cast<unsigned>(t)); }
+constexpr TypeMask mask_of(ParticleType t) {
+  return TypeMask(1u << static_cast<unsigned>(t));
+}
 constexpr TypeMask kLiquidMask = mask_of(ParticleType::Liquid);
 constexpr TypeMask kBoundaryMask = mask_of(ParticleType::Rigid) | mask_of(ParticleType::Frozen);
 constexpr TypeMask kAllTypes = 0x0F;
 
-constexpr bool in_mask(TypeMask m, ParticleType t) { return (m & mask_of(t)) != 0; }
+constexpr bool in_mask(TypeMask m, ParticleType t) {
+  return (m & mask_of(t)) != 0;
+}
 
 constexpr std::string_view to_string(ParticleType t) {
   switch (t) {
-    case ParticleType::Liquid: return "liquid";
-    case ParticleType::Rigid: return "rigid";
-    case ParticleType::Granular: return "granular";
-    case ParticleType::Frozen: return "frozen";
+    case ParticleType::Liquid:
+      return "liquid";
+    case ParticleType::Rigid:
+      return "rigid";
+    case ParticleType::Granular:
+      return "granular";
+    case ParticleType::Frozen:
+      return "frozen";
   }
   return "unknown";
 }

@@ -34,19 +34,37 @@ struct Vec3 {
   }
 };
 
-UPF_HD constexpr Vec3 operator+(Vec3 a, const Vec3& b) { return a += b; }
-UPF_HD constexpr Vec3 operator-(Vec3 a, const Vec3& b) { return a -= b; }
-UPF_HD constexpr Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
-UPF_HD constexpr Vec3 operator*(Vec3 a, Real s) { return a *= s; }
-UPF_HD constexpr Vec3 operator*(Real s, Vec3 a) { return a *= s; }
-UPF_HD constexpr Vec3 operator/(const Vec3& a, Real s) { return {a.x / s, a.y / s, a.z / s}; }
+UPF_HD constexpr Vec3 operator+(Vec3 a, const Vec3& b) {
+  return a += b;
+}
+UPF_HD constexpr Vec3 operator-(Vec3 a, const Vec3& b) {
+  return a -= b;
+}
+UPF_HD constexpr Vec3 operator-(const Vec3& a) {
+  return {-a.x, -a.y, -a.z};
+}
+UPF_HD constexpr Vec3 operator*(Vec3 a, Real s) {
+  return a *= s;
+}
+UPF_HD constexpr Vec3 operator*(Real s, Vec3 a) {
+  return a *= s;
+}
+UPF_HD constexpr Vec3 operator/(const Vec3& a, Real s) {
+  return {a.x / s, a.y / s, a.z / s};
+}
 UPF_HD constexpr bool operator==(const Vec3& a, const Vec3& b) {
   return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
-UPF_HD constexpr Real dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-UPF_HD constexpr Real squared_norm(const Vec3& a) { return dot(a, a); }
-UPF_HD inline Real norm(const Vec3& a) { return std::sqrt(squared_norm(a)); }
+UPF_HD constexpr Real dot(const Vec3& a, const Vec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+UPF_HD constexpr Real squared_norm(const Vec3& a) {
+  return dot(a, a);
+}
+UPF_HD inline Real norm(const Vec3& a) {
+  return std::sqrt(squared_norm(a));
+}
 UPF_HD inline bool is_finite(const Vec3& a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }

@@ -1,6 +1,7 @@
 // Cubic spline kernel (Monaghan 1992, "Smoothed particle hydrodynamics", Annu. Rev. Astron.
 // Astrophys. 30), written with the support radius H (= 2h) as in SPlisHSPlasH:
-//   q = r / H,  W = k (6q^3 - 6q^2 + 1) for q <= 1/2,  W = 2k (1 - q)^3 for q <= 1,  k = 8/(pi H^3).
+//   q = r / H,  W = k (6q^3 - 6q^2 + 1) for q <= 1/2,  W = 2k (1 - q)^3 for q <= 1,  k = 8/(pi
+//   H^3).
 // The default kernel of every fluid solver.
 #pragma once
 

@@ -38,8 +38,10 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
   const std::int64_t count = static_cast<std::int64_t>(n);
   Real lx = lo[0], ly = lo[1], lz = lo[2];
   Real hx = -lo[0], hy = -lo[1], hz = -lo[2];
-#pragma omp parallel for schedule(static) num_threads(exec.threads()) \
-    reduction(min : lx, ly, lz) reduction(max : hx, hy, hz)
+#pragma omp parallel for schedule(static) num_threads(exec.threads()) reduction(min           \
+                                                                                : lx, ly, lz) \
+    reduction(max                                                                             \
+              : hx, hy, hz)
   for (std::int64_t i = 0; i < count; ++i) {
     lx = std::min(lx, x[i].x);
     ly = std::min(ly, x[i].y);
@@ -92,8 +94,8 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
         const std::uint64_t k = cell_keys_[c];
         const std::size_t linear =
             compact_bits_3d(k) +
-            std::size_t(dims_[0]) * (compact_bits_3d(k >> 1) +
-                                     std::size_t(dims_[1]) * compact_bits_3d(k >> 2));
+            std::size_t(dims_[0]) *
+                (compact_bits_3d(k >> 1) + std::size_t(dims_[1]) * compact_bits_3d(k >> 2));
         dense_[linear] = std::uint32_t(c + 1);
       }
     }
@@ -152,8 +154,9 @@ int NeighbourGrid::neighbour_cells(std::size_t cell, CellRange ranges[27]) const
         if (!dense_.empty()) {
           if (nx >= dims_[0] || ny >= dims_[1] || nz >= dims_[2]) continue;
           const std::uint32_t slot =
-              dense_[std::size_t(nx) + std::size_t(dims_[0]) *
-                                           (std::size_t(ny) + std::size_t(dims_[1]) * std::size_t(nz))];
+              dense_[std::size_t(nx) +
+                     std::size_t(dims_[0]) *
+                         (std::size_t(ny) + std::size_t(dims_[1]) * std::size_t(nz))];
           if (slot == 0) continue;
           j = slot - 1;
         } else {
@@ -274,7 +277,8 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
       const auto& buf = buffers[std::size_t(t)][l];
       for (std::size_t k = 0; k < seg.size(); ++k) {
         const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : std::uint32_t(buf.size());
-        std::copy(buf.begin() + seg[k].begin, buf.begin() + end, indices + offsets[seg[k].particle]);
+        std::copy(buf.begin() + seg[k].begin, buf.begin() + end,
+                  indices + offsets[seg[k].particle]);
       }
     }
   }

@@ -54,8 +54,8 @@ class NeighbourGrid {
 
   Real cell_size_;
   Vec3 origin_{};
-  std::vector<std::uint64_t> keys_;        // per particle (memory order)
-  std::vector<std::uint32_t> sorted_;      // particle indices in (key, id) order
+  std::vector<std::uint64_t> keys_;    // per particle (memory order)
+  std::vector<std::uint32_t> sorted_;  // particle indices in (key, id) order
   std::vector<std::uint32_t> sort_scratch_;
   std::vector<std::uint64_t> cell_keys_;   // distinct keys, ascending
   std::vector<std::uint32_t> cell_begin_;  // into sorted_, size cell_count()+1

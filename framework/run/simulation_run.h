@@ -24,8 +24,8 @@ struct RunProgress {
 
 struct RunOptions {
   std::filesystem::path out_dir = "out";
-  int threads = 0;                        // 0: OpenMP's default
-  std::optional<double> end_time;         // overrides the scene's time.end
+  int threads = 0;                 // 0: OpenMP's default
+  std::optional<double> end_time;  // overrides the scene's time.end
   bool write_frames = true;
   std::function<void(const RunProgress&)> on_progress;  // called after every step
   std::function<void(const World&)> on_step;            // tests and tools look at the world

@@ -63,7 +63,8 @@ void JsonInput::check_keys(const nlohmann::json& object, const std::string& path
   for (auto it = object.begin(); it != object.end(); ++it) {
     if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
     std::string message = "unknown key '" + it.key() + "'";
-    if (auto guess = did_you_mean(it.key(), allowed)) message += " (did you mean '" + *guess + "'?)";
+    if (auto guess = did_you_mean(it.key(), allowed))
+      message += " (did you mean '" + *guess + "'?)";
     problem(child(path, it.key()), message);
   }
 }
@@ -85,8 +86,8 @@ std::optional<double> JsonInput::required_number(const nlohmann::json& object,
   const double v = it->get<double>();
   const bool low = lo_open ? !(v > lo) : !(v >= lo);
   if (!std::isfinite(v) || low || v > hi) {
-    std::string range = std::string(lo_open ? "(" : "[") + format_number(lo) + ", " +
-                        format_number(hi) + "]";
+    std::string range =
+        std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + "]";
     if (!unit.empty()) range += " " + std::string(unit);
     problem(where, "value " + format_number(v) + " is out of range " + range);
     return std::nullopt;
@@ -95,8 +96,8 @@ std::optional<double> JsonInput::required_number(const nlohmann::json& object,
 }
 
 double JsonInput::number(const nlohmann::json& object, const std::string& path,
-                         std::string_view key, double fallback, double lo, double hi,
-                         bool lo_open, std::string_view unit) {
+                         std::string_view key, double fallback, double lo, double hi, bool lo_open,
+                         std::string_view unit) {
   if (!object.contains(std::string(key))) return fallback;
   return required_number(object, path, key, lo, hi, lo_open, unit).value_or(fallback);
 }

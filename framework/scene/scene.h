@@ -38,12 +38,12 @@ enum class ProbeKind { Extent, Height, Pressure };
 struct ProbeDesc {
   std::string name;
   ProbeKind kind = ProbeKind::Extent;
-  int axis = 0;                 // extent: measured axis; height: the up axis
-  bool max_side = true;         // extent: largest (true) or smallest coordinate
-  std::optional<Box> region;    // extent: only liquid inside this box counts
+  int axis = 0;                                  // extent: measured axis; height: the up axis
+  bool max_side = true;                          // extent: largest (true) or smallest coordinate
+  std::optional<Box> region;                     // extent: only liquid inside this box counts
   Eigen::Vector2d at = Eigen::Vector2d::Zero();  // height: the two other coordinates, in order
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // pressure: sphere centre
-  double radius = 0;            // height: column radius; pressure: sphere radius
+  double radius = 0;  // height: column radius; pressure: sphere radius
 };
 
 struct OutputDesc {

@@ -7,7 +7,9 @@
 namespace upf {
 
 namespace {
-Vec3 to_vec3(const Eigen::Vector3d& v) { return {Real(v[0]), Real(v[1]), Real(v[2])}; }
+Vec3 to_vec3(const Eigen::Vector3d& v) {
+  return {Real(v[0]), Real(v[1]), Real(v[2])};
+}
 }  // namespace
 
 void add_container_walls(Particles& particles, const Box& box, Real spacing, int layers,
@@ -22,8 +24,8 @@ void add_container_walls(Particles& particles, const Box& box, Real spacing, int
         const bool inside = i >= 0 && i < n[0] && j >= 0 && j < n[1] && k >= 0 && k < n[2];
         if (inside) continue;
         const Eigen::Vector3d x =
-            box.min + Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5)
-                          .cwiseProduct(step);
+            box.min +
+            Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5).cwiseProduct(step);
         particles.add(to_vec3(x), Vec3{}, Real(0), ParticleType::Frozen, material);
       }
 }
@@ -35,8 +37,8 @@ void add_fluid_block(Particles& particles, const Box& box, Real spacing, const V
     for (std::int64_t j = 0; j < n[1]; ++j)
       for (std::int64_t i = 0; i < n[0]; ++i) {
         const Eigen::Vector3d x =
-            box.min + Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5) *
-                          double(spacing);
+            box.min +
+            Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5) * double(spacing);
         particles.add(to_vec3(x), velocity, particle_mass, ParticleType::Liquid, material);
       }
 }

@@ -1,8 +1,8 @@
 #include "framework/scene/scene_reader.h"
 
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "framework/scene/json_input.h"
 
@@ -13,8 +13,8 @@ namespace {
 using nlohmann::json;
 
 const std::vector<std::string> kTopKeys = {
-    "name",       "description", "gravity", "particle_spacing", "materials", "containers",
-    "fluid_blocks", "time",      "output",  "probes",           "stability", "neighbours"};
+    "name",         "description", "gravity", "particle_spacing", "materials", "containers",
+    "fluid_blocks", "time",        "output",  "probes",           "stability", "neighbours"};
 const std::vector<std::string> kAxisNames = {"x", "y", "z"};
 const std::vector<std::string> kKnownFields = {"density", "pressure"};
 
@@ -69,8 +69,8 @@ void read_material(JsonInput& in, const json& node, const std::string& name,
     allowed.push_back(spec.name);
     if (!node.contains(spec.name)) continue;
     // Densities and the like must be positive: the spec's range says so.
-    auto v = in.required_number(node, path, spec.name, spec.min_value, spec.max_value, false,
-                                spec.unit);
+    auto v =
+        in.required_number(node, path, spec.name, spec.min_value, spec.max_value, false, spec.unit);
     if (v) m.params.set(spec.name, *v);
   }
   in.check_keys(node, path, allowed);
@@ -224,8 +224,8 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   if (!in.expect_object(doc, "")) fail_if_any();
   in.check_keys(doc, "", kTopKeys);
 
-  scene.name = in.string(doc, "", "name", false)
-                   .value_or(std::filesystem::path(source).stem().string());
+  scene.name =
+      in.string(doc, "", "name", false).value_or(std::filesystem::path(source).stem().string());
   in.string(doc, "", "description", false);
   if (auto g = in.vec3(doc, "", "gravity", false)) {
     scene.world.gravity = {Real((*g)[0]), Real((*g)[1]), Real((*g)[2])};
@@ -312,9 +312,9 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
         in.check_keys(b, path, {"material", "min", "max", "velocity"});
         FluidBlockDesc desc;
         auto mat = in.string(b, path, "material", true);
-        const bool mat_ok = mat && check_material_ref(in, scene, *mat,
-                                                      JsonInput::child(path, "material"),
-                                                      ParticleType::Liquid);
+        const bool mat_ok =
+            mat && check_material_ref(in, scene, *mat, JsonInput::child(path, "material"),
+                                      ParticleType::Liquid);
         if (mat_ok) desc.material = *mat;
         if (auto v = in.vec3(b, path, "velocity", false)) desc.velocity = *v;
         auto box = read_box(in, b, path, h);
@@ -354,7 +354,8 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
           const std::string s = name.get<std::string>();
           if (std::find(kKnownFields.begin(), kKnownFields.end(), s) == kKnownFields.end()) {
             std::string msg = "unknown field '" + s + "'";
-            if (auto guess = did_you_mean(s, kKnownFields)) msg += " (did you mean '" + *guess + "'?)";
+            if (auto guess = did_you_mean(s, kKnownFields))
+              msg += " (did you mean '" + *guess + "'?)";
             in.problem(path, msg);
             continue;
           }
@@ -410,9 +411,8 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
 SceneDescription load_scene_file(const std::filesystem::path& path, const Registry& registry) {
   std::ifstream file(path);
   if (!file) {
-    throw InputError(path.string(), std::filesystem::exists(path)
-                                        ? "cannot be read (permissions?)"
-                                        : "no such file");
+    throw InputError(path.string(), std::filesystem::exists(path) ? "cannot be read (permissions?)"
+                                                                  : "no such file");
   }
   std::stringstream text;
   text << file.rdbuf();

@@ -16,8 +16,8 @@ class World;
 
 // What a solver reports after a step, for metrics and comparisons.
 struct SolverStats {
-  int iterations = 0;              // pressure (or constraint) iterations of the last step
-  double avg_density_error = 0;    // average relative compression (rho - rho0)/rho0, >= 0
+  int iterations = 0;            // pressure (or constraint) iterations of the last step
+  double avg_density_error = 0;  // average relative compression (rho - rho0)/rho0, >= 0
   double max_density_error = 0;
   std::vector<std::pair<std::string, double>> stage_ms;  // wall milliseconds by stage
 };

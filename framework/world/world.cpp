@@ -14,7 +14,9 @@ namespace upf {
 World::World(WorldSettings settings, int threads)
     : settings_(settings), executor_(threads), grid_(settings.support_radius()) {}
 
-void World::add_solver(std::unique_ptr<Solver> solver) { solvers_.push_back(std::move(solver)); }
+void World::add_solver(std::unique_ptr<Solver> solver) {
+  solvers_.push_back(std::move(solver));
+}
 
 int World::request_neighbours(TypeMask query, TypeMask target) {
   for (std::size_t i = 0; i < lists_.size(); ++i)
@@ -33,8 +35,8 @@ void World::prepare() {
   grid_.build(particles_, executor_);
   NeighbourList frozen;
   const TypeMask frozen_mask = mask_of(ParticleType::Frozen);
-  grid_.find_neighbours(particles_, frozen_mask, frozen_mask, settings_.support_radius(),
-                        executor_, frozen);
+  grid_.find_neighbours(particles_, frozen_mask, frozen_mask, settings_.support_radius(), executor_,
+                        frozen);
   compute_boundary_volumes(particles_, frozen_mask, frozen, kernel(), executor_);
 
   for (auto& s : solvers_) s->prepare(*this);
@@ -117,8 +119,8 @@ void World::check_stability() const {
   std::size_t bad = n;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3& v = particles_.velocity[i];
-    const bool broken = !is_finite(particles_.position[i]) || !is_finite(v) ||
-                        double(squared_norm(v)) > limit2;
+    const bool broken =
+        !is_finite(particles_.position[i]) || !is_finite(v) || double(squared_norm(v)) > limit2;
     if (broken && (bad == n || particles_.id[i] < particles_.id[bad])) bad = i;
   }
   if (bad == n) return;

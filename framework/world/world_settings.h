@@ -6,11 +6,11 @@
 namespace upf {
 
 struct TimeSettings {
-  double end = 1.0;        // s
-  double dt_min = 1e-6;    // s
-  double dt_max = 5e-3;    // s
-  double cfl = 0.4;        // 1: dt <= cfl * spacing / |v|max
-  double fixed_dt = 0.0;   // s; > 0 replaces the adaptive step
+  double end = 1.0;       // s
+  double dt_min = 1e-6;   // s
+  double dt_max = 5e-3;   // s
+  double cfl = 0.4;       // 1: dt <= cfl * spacing / |v|max
+  double fixed_dt = 0.0;  // s; > 0 replaces the adaptive step
 };
 
 struct WorldSettings {
@@ -18,8 +18,8 @@ struct WorldSettings {
   Real spacing = Real(0.02);        // m, the initial particle spacing
   Real support_factor = 2;          // support radius / spacing
   TimeSettings time;
-  double max_speed = 100;    // m/s: faster particles stop the run as unstable
-  int reorder_every = 10;    // steps between locality reorders; 0 disables
+  double max_speed = 100;  // m/s: faster particles stop the run as unstable
+  int reorder_every = 10;  // steps between locality reorders; 0 disables
 
   Real support_radius() const { return support_factor * spacing; }
 };

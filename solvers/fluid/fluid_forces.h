@@ -67,8 +67,8 @@ UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* densit
       const std::uint32_t j = f.fluid.indices[k];
       const Vec3 xij = xi - f.x[j];
       const Real vx = dot(vi - f.v[j], xij);
-      a += fluid_gradient[k] *
-           (f.mass[j] / density[j] * vx / (squared_norm(xij) + Real(0.01) * h2));
+      a +=
+          fluid_gradient[k] * (f.mass[j] / density[j] * vx / (squared_norm(xij) + Real(0.01) * h2));
     }
     a *= Real(10) * nu;
   }
@@ -80,8 +80,8 @@ UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* densit
       const std::uint32_t b = f.boundary.indices[k];
       const Vec3 xib = xi - f.x[b];
       const Real vx = dot(vi - f.v[b], xib);
-      ab += f.kernel.gradient(xib) * (rho0 * f.boundary_volume[b] / density[i] * vx /
-                                      (squared_norm(xib) + Real(0.01) * h2));
+      ab += f.kernel.gradient(xib) *
+            (rho0 * f.boundary_volume[b] / density[i] * vx / (squared_norm(xib) + Real(0.01) * h2));
     }
     a += ab * (Real(10) * nub);
   }

@@ -24,8 +24,8 @@ struct FluidView {
   const Real* rest_density = nullptr;        // per material
   const Real* viscosity = nullptr;           // per material, kinematic [m^2/s]
   const Real* boundary_viscosity = nullptr;  // per material, kinematic [m^2/s]
-  NeighbourView fluid;     // fluid -> fluid
-  NeighbourView boundary;  // fluid -> frozen and rigid
+  NeighbourView fluid;                       // fluid -> fluid
+  NeighbourView boundary;                    // fluid -> frozen and rigid
   CubicSplineKernel kernel;
 };
 

@@ -13,8 +13,8 @@ namespace upf {
 // The boundary term takes the fluid particle's own pressure (Akinci's eq. 10). The symmetric
 // "mirrored" variant with 2 p_i drove the correction loop into slow, oscillating convergence next
 // to walls (73 iterations on the first step of the hydrostatic tank instead of 3).
-// `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from density_and_gradients: the
-// positions do not move during the correction loop, so neither do the gradients.
+// `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from density_and_gradients:
+// the positions do not move during the correction loop, so neither do the gradients.
 UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* pressure,
                                                 const Vec3* fluid_gradient,
                                                 const Vec3& boundary_gradient, std::uint32_t i) {

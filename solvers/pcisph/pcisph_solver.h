@@ -4,7 +4,8 @@
 // Each step predicts velocities and positions under the current pressure forces, measures the
 // predicted density error and raises pressures by delta * error until the average compression is
 // below eta (at least min_iterations, at most max_iterations). delta is the paper's scaling factor
-//   delta = -1 / (beta (-sum grad W . sum grad W - sum grad W . grad W)),  beta = 2 (dt m / rho0)^2,
+//   delta = -1 / (beta (-sum grad W . sum grad W - sum grad W . grad W)),  beta = 2 (dt m /
+//   rho0)^2,
 // with the sums over a full template neighbourhood on the initial lattice; it scales as 1/dt^2, so
 // the template sum is taken once and delta follows every change of dt. Only compression is
 // corrected: pressures stay >= 0. Boundaries follow Akinci et al. 2012 (shared with every fluid
@@ -46,8 +47,9 @@ class PcisphSolver final : public Solver {
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
   std::vector<Vec3> fluid_gradient_;
-  std::vector<std::uint8_t> owns_;    // per material: moved by this solver
-  std::vector<std::uint32_t> mine_;   // indices of the particles moved, rebuilt every step  // grad W_ij per fluid-list slot, for the current step
+  std::vector<std::uint8_t> owns_;   // per material: moved by this solver
+  std::vector<std::uint32_t> mine_;  // indices of the particles moved, rebuilt every step  // grad
+                                     // W_ij per fluid-list slot, for the current step
 };
 
 }  // namespace upf

@@ -33,8 +33,9 @@ Result run_upf(const std::string& args) {
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("upf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ =
+        fs::temp_directory_path() /
+        ("upf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -55,14 +56,16 @@ class Cli : public ::testing::Test {
   void expect_rejected(const nlohmann::json& doc, std::initializer_list<std::string> needles) {
     const Result r = run_upf("validate " + write(doc));
     EXPECT_EQ(r.code, 2) << r.output;
-    for (const auto& n : needles) EXPECT_NE(r.output.find(n), std::string::npos) << n << "\n" << r.output;
+    for (const auto& n : needles)
+      EXPECT_NE(r.output.find(n), std::string::npos) << n << "\n" << r.output;
   }
 
   fs::path dir_;
 };
 
 TEST_F(Cli, ValidSampleValidates) {
-  const Result r = run_upf("validate " + (fs::path(UPF_SOURCE_DIR) / "samples" / "dam_break.json").string());
+  const Result r =
+      run_upf("validate " + (fs::path(UPF_SOURCE_DIR) / "samples" / "dam_break.json").string());
   EXPECT_EQ(r.code, 0) << r.output;
 }
 

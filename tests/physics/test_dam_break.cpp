@@ -40,8 +40,8 @@ TEST(DamBreak, PcisphKeepsWaterInTankWithFewIterations) {
         << "particle " << p.id[i] << " left the tank at t = " << w.time();
   }
   const double mean_iterations = iterations / double(steps);
-  std::printf("%llu steps, mean %.2f pressure iterations\n",
-              static_cast<unsigned long long>(steps), mean_iterations);
+  std::printf("%llu steps, mean %.2f pressure iterations\n", static_cast<unsigned long long>(steps),
+              mean_iterations);
   EXPECT_LE(mean_iterations, 10.0);
   // The surge reached the far wall (it does so within ~0.5 s for a 0.8 m column).
   EXPECT_GT(front_at_end, 1.0);

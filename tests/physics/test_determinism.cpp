@@ -21,7 +21,9 @@ std::map<ParticleId, std::pair<Vec3, Vec3>> run_steps(nlohmann::json doc, int th
   return state;
 }
 
-bool bitwise_equal(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool bitwise_equal(const Vec3& a, const Vec3& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 void expect_identical(const std::map<ParticleId, std::pair<Vec3, Vec3>>& a,
                       const std::map<ParticleId, std::pair<Vec3, Vec3>>& b) {

@@ -1,5 +1,5 @@
-// Hydrostatic tank with PCISPH (samples/hydrostatic_tank.json, eta = 0.5 %): water at rest must hold the
-// hydrostatic pressure p = rho0 g d at depth d (Pascal's law), stay nearly incompressible
+// Hydrostatic tank with PCISPH (samples/hydrostatic_tank.json, eta = 0.5 %): water at rest must
+// hold the hydrostatic pressure p = rho0 g d at depth d (Pascal's law), stay nearly incompressible
 // (Solenthaler & Pajarola 2009: average compression below eta), come to rest, and stay inside the
 // tank (Akinci et al. 2012 boundaries).
 #include <gtest/gtest.h>

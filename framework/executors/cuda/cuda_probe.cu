@@ -16,8 +16,8 @@ __global__ void compile_check(CubicSplineKernel w, const Vec3* x, Real* out, std
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= n) return;
   const MullerKernels m(w.support_radius());
-  out[i] = w.value(x[i]) + norm(w.gradient(x[i])) + m.poly6(norm(x[i])) +
-           Real(morton_key(i, i, i) & 1u);
+  out[i] =
+      w.value(x[i]) + norm(w.gradient(x[i])) + m.poly6(norm(x[i])) + Real(morton_key(i, i, i) & 1u);
 }
 }  // namespace
 
