@@ -29,14 +29,12 @@ double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
 MetricsLog::MetricsLog(const std::filesystem::path& path) : path_(path), out_(open_log(path)) {}
 
 void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
-  if (m.step == 1 || stages_.empty()) {
-    if (stages_.empty()) {
-      for (const auto& [name, ms] : r.solver.stage_ms) stages_.push_back(name);
-      out_ << "step,t,dt,iterations,avg_density_error,max_density_error,kinetic_energy,"
-              "n_liquid,n_rigid,n_granular,n_frozen,neighbour_ms";
-      for (const auto& s : stages_) out_ << ',' << s << "_ms";
-      out_ << ",wall_ms\n";
-    }
+  if (stages_.empty()) {  // the header follows the stages the solvers reported on step 1
+    for (const auto& [name, ms] : r.solver.stage_ms) stages_.push_back(name);
+    out_ << "step,t,dt,iterations,avg_density_error,max_density_error,kinetic_energy,"
+            "n_liquid,n_rigid,n_granular,n_frozen,neighbour_ms";
+    for (const auto& s : stages_) out_ << ',' << s << "_ms";
+    out_ << ",wall_ms\n";
   }
   out_ << m.step << ',' << m.time << ',' << r.dt << ',' << r.solver.iterations << ','
        << r.solver.avg_density_error << ',' << r.solver.max_density_error << ','
