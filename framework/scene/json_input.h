@@ -18,6 +18,8 @@ namespace upf {
 std::optional<std::string> did_you_mean(std::string_view word,
                                         const std::vector<std::string>& candidates);
 
+std::string json_type_name(const nlohmann::json& node);
+
 class JsonInput {
  public:
   explicit JsonInput(std::vector<InputProblem>& problems) : problems_(problems) {}
@@ -34,6 +36,24 @@ class JsonInput {
 
   // False (with a problem) when `node` is not an object.
   bool expect_object(const nlohmann::json& node, const std::string& path);
+  // Calls visit(element, path) for each object element of the array at object[key] (absent: no
+  // calls); a non-array or non-object element is reported.
+  template <class Visit>
+  void for_each_object(const nlohmann::json& object, const std::string& path, std::string_view key,
+                       Visit&& visit) {
+    auto it = object.find(std::string(key));
+    if (it == object.end()) return;
+    const std::string where = child(path, key);
+    if (!it->is_array()) {
+      problem(where, "expected an array, found " + json_type_name(*it));
+      return;
+    }
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const std::string element_path = child(where, i);
+      if (expect_object((*it)[i], element_path)) visit((*it)[i], element_path);
+    }
+  }
+
   // Reports every key of `object` not in `allowed`.
   void check_keys(const nlohmann::json& object, const std::string& path,
                   const std::vector<std::string>& allowed);
@@ -56,7 +76,5 @@ class JsonInput {
  private:
   std::vector<InputProblem>& problems_;
 };
-
-std::string json_type_name(const nlohmann::json& node);
 
 }  // namespace upf

@@ -152,7 +152,6 @@ bool check_material_ref(JsonInput& in, const SceneDescription& scene, const std:
 
 void read_probe(JsonInput& in, const json& node, const std::string& path, double spacing,
                 SceneDescription& scene) {
-  if (!in.expect_object(node, path)) return;
   ProbeDesc p;
   auto name = in.string(node, path, "name", true);
   auto type = in.string(node, path, "type", true);
@@ -278,60 +277,42 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
     }
 
   // Containers.
-  if (auto it = doc.find("containers"); it != doc.end()) {
-    if (!it->is_array()) {
-      in.problem("/containers", "expected an array, found " + json_type_name(*it));
-    } else {
-      for (std::size_t i = 0; i < it->size(); ++i) {
-        const std::string path = JsonInput::child("/containers", i);
-        const json& c = (*it)[i];
-        if (!in.expect_object(c, path)) continue;
-        in.check_keys(c, path, {"material", "min", "max", "layers"});
-        ContainerDesc desc;
-        auto mat = in.string(c, path, "material", true);
-        if (mat && check_material_ref(in, scene, *mat, JsonInput::child(path, "material"),
-                                      ParticleType::Frozen))
-          desc.material = *mat;
-        desc.layers = int(in.number(c, path, "layers", 2, 1, 10));
-        auto box = read_box(in, c, path, h);
-        if (box) desc.box = *box;
-        if (mat && box) scene.containers.push_back(desc);
-      }
-    }
-  }
+  in.for_each_object(doc, "", "containers", [&](const json& c, const std::string& path) {
+    in.check_keys(c, path, {"material", "min", "max", "layers"});
+    ContainerDesc desc;
+    auto mat = in.string(c, path, "material", true);
+    if (mat && check_material_ref(in, scene, *mat, JsonInput::child(path, "material"),
+                                  ParticleType::Frozen))
+      desc.material = *mat;
+    desc.layers = int(in.number(c, path, "layers", 2, 1, 10));
+    auto box = read_box(in, c, path, h);
+    if (box) desc.box = *box;
+    if (mat && box) scene.containers.push_back(desc);
+  });
 
   // Fluid blocks: each must sit inside a container.
-  if (auto it = doc.find("fluid_blocks"); it != doc.end()) {
-    if (!it->is_array()) {
-      in.problem("/fluid_blocks", "expected an array, found " + json_type_name(*it));
-    } else {
-      for (std::size_t i = 0; i < it->size(); ++i) {
-        const std::string path = JsonInput::child("/fluid_blocks", i);
-        const json& b = (*it)[i];
-        if (!in.expect_object(b, path)) continue;
-        in.check_keys(b, path, {"material", "min", "max", "velocity"});
-        FluidBlockDesc desc;
-        auto mat = in.string(b, path, "material", true);
-        const bool mat_ok =
-            mat && check_material_ref(in, scene, *mat, JsonInput::child(path, "material"),
-                                      ParticleType::Liquid);
-        if (mat_ok) desc.material = *mat;
-        if (auto v = in.vec3(b, path, "velocity", false)) desc.velocity = *v;
-        auto box = read_box(in, b, path, h);
-        if (!box) continue;
-        desc.box = *box;
-        bool inside = false;
-        for (const auto& c : scene.containers) inside = inside || c.box.contains(*box, 1e-9);
-        if (!inside) {
-          std::ostringstream msg;
-          msg << "fluid block [" << box->min.transpose() << "] - [" << box->max.transpose()
-              << "] is not inside any container";
-          in.problem(path, msg.str());
-        }
-        if (mat_ok) scene.fluid_blocks.push_back(desc);
-      }
+  in.for_each_object(doc, "", "fluid_blocks", [&](const json& b, const std::string& path) {
+    in.check_keys(b, path, {"material", "min", "max", "velocity"});
+    FluidBlockDesc desc;
+    auto mat = in.string(b, path, "material", true);
+    const bool mat_ok =
+        mat && check_material_ref(in, scene, *mat, JsonInput::child(path, "material"),
+                                  ParticleType::Liquid);
+    if (mat_ok) desc.material = *mat;
+    if (auto v = in.vec3(b, path, "velocity", false)) desc.velocity = *v;
+    auto box = read_box(in, b, path, h);
+    if (!box) return;
+    desc.box = *box;
+    bool inside = false;
+    for (const auto& c : scene.containers) inside = inside || c.box.contains(*box, 1e-9);
+    if (!inside) {
+      std::ostringstream msg;
+      msg << "fluid block [" << box->min.transpose() << "] - [" << box->max.transpose()
+          << "] is not inside any container";
+      in.problem(path, msg.str());
     }
-  }
+    if (mat_ok) scene.fluid_blocks.push_back(desc);
+  });
   if (scene.fluid_blocks.empty() && problems.empty())
     in.problem("/fluid_blocks", "the scene has no fluid block: nothing would move");
 
@@ -382,14 +363,9 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   }
 
   // Probes.
-  if (auto it = doc.find("probes"); it != doc.end()) {
-    if (!it->is_array()) {
-      in.problem("/probes", "expected an array, found " + json_type_name(*it));
-    } else {
-      for (std::size_t i = 0; i < it->size(); ++i)
-        read_probe(in, (*it)[i], JsonInput::child("/probes", i), h, scene);
-    }
-  }
+  in.for_each_object(doc, "", "probes", [&](const json& probe, const std::string& path) {
+    read_probe(in, probe, path, h, scene);
+  });
 
   // Memory: estimated before anything is allocated.
   if (problems.empty()) {
