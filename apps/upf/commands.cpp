@@ -7,18 +7,12 @@
 #include "framework/run/simulation_run.h"
 #include "framework/scene/scene_reader.h"
 #include "framework/solver/registry.h"
+#include "app_registry.h"
 #include "progress.h"
-#include "solvers/register_builtin_solvers.h"
 
 namespace upf::app {
 
 namespace {
-Registry builtin_registry() {
-  Registry registry;
-  register_builtins(registry);
-  return registry;
-}
-
 void print_params(const std::vector<ParamSpec>& specs) {
   for (const auto& p : specs) {
     std::printf("      %-20s %-8s default %-10g range [%g, %g]%s\n        %s\n", p.name.c_str(),
@@ -29,7 +23,7 @@ void print_params(const std::vector<ParamSpec>& specs) {
 }  // namespace
 
 int run_command(const RunArgs& args) {
-  const Registry registry = builtin_registry();
+  const Registry registry = make_app_registry();
   const SceneDescription scene = load_scene_file(args.scene, registry);
   RunOptions options;
   options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / scene.name
@@ -58,7 +52,7 @@ int run_command(const RunArgs& args) {
 }
 
 int validate_command(const std::vector<std::string>& files) {
-  const Registry registry = builtin_registry();
+  const Registry registry = make_app_registry();
   int bad = 0;
   for (const auto& f : files) {
     try {
@@ -76,7 +70,7 @@ int validate_command(const std::vector<std::string>& files) {
 }
 
 int info_command() {
-  const Registry registry = builtin_registry();
+  const Registry registry = make_app_registry();
   std::printf("Material types (scene key materials/NAME/type):\n");
   for (const auto& k : registry.material_kinds()) {
     std::printf("  %s (particle type %s)%s%s\n    %s\n", k.name.c_str(),

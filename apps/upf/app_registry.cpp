@@ -1,0 +1,13 @@
+#include "app_registry.h"
+
+#include "solvers/register_builtin_solvers.h"
+
+namespace upf::app {
+
+Registry make_app_registry() {
+  Registry registry;
+  register_builtins(registry);
+  return registry;
+}
+
+}  // namespace upf::app
