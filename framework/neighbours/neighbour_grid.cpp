@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <omp.h>
 
@@ -135,6 +136,29 @@ void NeighbourGrid::sort_by_key(std::size_t n) {
   }
 }
 
+std::size_t NeighbourGrid::CandidateBuffer::gather(const CellRange* ranges, int count,
+                                                   const Vec3* sorted_x) {
+  std::size_t m = 0;
+  for (int c = 0; c < count; ++c) m += ranges[c].end - ranges[c].begin;
+  if (x.size() < m) {
+    x.resize(m);
+    y.resize(m);
+    z.resize(m);
+    d2.resize(m);
+    slot.resize(m);
+    hit.resize(m);
+  }
+  std::size_t k = 0;
+  for (int c = 0; c < count; ++c)
+    for (std::uint32_t u = ranges[c].begin; u < ranges[c].end; ++u, ++k) {
+      x[k] = sorted_x[u].x;
+      y[k] = sorted_x[u].y;
+      z[k] = sorted_x[u].z;
+      slot[k] = u;
+    }
+  return m;
+}
+
 int NeighbourGrid::neighbour_cells(std::size_t cell, CellRange ranges[27]) const {
   std::uint32_t c[3];
   const std::uint64_t key = cell_keys_[cell];
@@ -166,9 +190,7 @@ int NeighbourGrid::neighbour_cells(std::size_t cell, CellRange ranges[27]) const
           if (it == cell_keys_.end() || *it != k) continue;
           j = std::size_t(it - cell_keys_.begin());
         }
-        ranges[found++] = {cell_begin_[j],
-                           cell_begin_[j + 1],
-                           {std::int8_t(dx), std::int8_t(dy), std::int8_t(dz)}};
+        ranges[found++] = {cell_begin_[j], cell_begin_[j + 1]};
       }
   return found;
 }
@@ -195,22 +217,23 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
   // found by one thread in a fixed order, so the result does not depend on the thread count.
   const int threads = exec.threads();
   // Scratch kept between calls: no allocation (and no page faults) in the steady state.
-  auto& buffers = scratch_.buffers;
-  auto& segments = scratch_.segments;
-  buffers.resize(static_cast<std::size_t>(threads));
-  for (auto& b : buffers) {
-    b.resize(lists);
-    for (auto& l : b) l.clear();
-  }
-  segments.resize(static_cast<std::size_t>(threads) * lists);
-  for (auto& seg : segments) seg.clear();
+  if (lists > kMaxLists) throw std::invalid_argument("find_neighbours: too many target lists");
+  auto& per_thread = scratch_.threads;
+  per_thread.resize(static_cast<std::size_t>(threads));
+  for (auto& ts : per_thread)
+    for (std::size_t l = 0; l < lists; ++l) {
+      ts.buffers[l].clear();
+      ts.segments[l].clear();
+    }
   for (NeighbourList* out : outs) out->offsets.assign(n + 1, 0);
 
   const std::int64_t cells = std::int64_t(cell_keys_.size());
 #pragma omp parallel num_threads(threads)
   {
-    const std::size_t t = std::size_t(omp_get_thread_num());
-    auto& my_buffers = buffers[t];
+    ThreadScratch& mine = per_thread[std::size_t(omp_get_thread_num())];
+    auto& my_buffers = mine.buffers;
+    auto& my_segments = mine.segments;
+    CandidateBuffer& cand = mine.candidates;
 #pragma omp for schedule(dynamic, 32)
     for (std::int64_t cell = 0; cell < cells; ++cell) {
       const std::uint32_t first = cell_begin_[std::size_t(cell)];
@@ -221,38 +244,37 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
       if (!any_query) continue;
       CellRange ranges[27];
       const int found = neighbour_cells(std::size_t(cell), ranges);
-      const std::uint64_t key = cell_keys_[std::size_t(cell)];
-      const double cell_lo[3] = {
-          double(origin_.x) + double(compact_bits_3d(key)) * double(cell_size_),
-          double(origin_.y) + double(compact_bits_3d(key >> 1)) * double(cell_size_),
-          double(origin_.z) + double(compact_bits_3d(key >> 2)) * double(cell_size_)};
+      // The candidates of the 27 cells, gathered once for all particles of this cell into
+      // coordinate arrays: the distance loop below then vectorises, and the hits are picked out
+      // without a branch per candidate (a hit rate of about 1 in 5 defeats branch prediction).
+      const std::size_t m = cand.gather(ranges, found, sorted_x_.data());
+      const Real* cx = cand.x.data();
+      const Real* cy = cand.y.data();
+      const Real* cz = cand.z.data();
+      Real* d2 = cand.d2.data();
+      std::uint32_t* hit = cand.hit.data();
       for (std::uint32_t s = first; s < last; ++s) {
         if (!in_mask(query, sorted_type_[s])) continue;
         const std::uint32_t i = sorted_[s];
         for (std::size_t l = 0; l < lists; ++l)
-          segments[t * lists + l].push_back({i, std::uint32_t(my_buffers[l].size())});
-        const Vec3 xi = sorted_x_[s];
-        // Corner and edge cells farther than the radius from this particle are skipped (about a
-        // quarter of the candidates); the margin keeps the test conservative under round-off.
-        double u[3];
-        for (int a = 0; a < 3; ++a) u[a] = double(xi[a]) - cell_lo[a];
-        const double skip2 = double(r2) * (1.0 + 1e-5) + 1e-30;
-        for (int c = 0; c < found; ++c) {
-          double gap2 = 0;
-          for (int a = 0; a < 3; ++a) {
-            const int d = ranges[c].offset[a];
-            const double gap = d > 0 ? double(cell_size_) - u[a] : (d < 0 ? u[a] : 0.0);
-            if (d != 0 && gap > 0) gap2 += gap * gap;
-          }
-          if (gap2 >= skip2) continue;
-          for (std::uint32_t u2 = ranges[c].begin; u2 < ranges[c].end; ++u2) {
-            // Distance first: contiguous reads; the type is only looked at for hits.
-            if (!(squared_norm(xi - sorted_x_[u2]) < r2) || u2 == s) continue;
-            const ParticleType tj = sorted_type_[u2];
-            if (!in_mask(any_target, tj)) continue;
-            for (std::size_t l = 0; l < lists; ++l)
-              if (in_mask(targets[l], tj)) my_buffers[l].push_back(sorted_[u2]);
-          }
+          my_segments[l].push_back({i, std::uint32_t(my_buffers[l].size())});
+        const Real xi = sorted_x_[s].x, yi = sorted_x_[s].y, zi = sorted_x_[s].z;
+        for (std::size_t k = 0; k < m; ++k) {
+          const Real dx = xi - cx[k], dy = yi - cy[k], dz = zi - cz[k];
+          d2[k] = dx * dx + dy * dy + dz * dz;
+        }
+        std::size_t hits = 0;
+        for (std::size_t k = 0; k < m; ++k) {
+          hit[hits] = std::uint32_t(k);
+          hits += d2[k] < r2;
+        }
+        for (std::size_t h = 0; h < hits; ++h) {
+          const std::uint32_t u2 = cand.slot[hit[h]];
+          if (u2 == s) continue;
+          const ParticleType tj = sorted_type_[u2];
+          if (!in_mask(any_target, tj)) continue;
+          for (std::size_t l = 0; l < lists; ++l)
+            if (in_mask(targets[l], tj)) my_buffers[l].push_back(sorted_[u2]);
         }
       }
     }
@@ -261,8 +283,8 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
   for (std::size_t l = 0; l < lists; ++l) {
     std::uint32_t* offsets = outs[l]->offsets.data();
     for (int t = 0; t < threads; ++t) {
-      const auto& seg = segments[std::size_t(t) * lists + l];
-      const auto& buf = buffers[std::size_t(t)][l];
+      const auto& seg = per_thread[std::size_t(t)].segments[l];
+      const auto& buf = per_thread[std::size_t(t)].buffers[l];
       for (std::size_t k = 0; k < seg.size(); ++k) {
         const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : std::uint32_t(buf.size());
         offsets[seg[k].particle + 1] = end - seg[k].begin;
@@ -273,8 +295,8 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
     std::uint32_t* indices = outs[l]->indices.data();
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (int t = 0; t < threads; ++t) {
-      const auto& seg = segments[std::size_t(t) * lists + l];
-      const auto& buf = buffers[std::size_t(t)][l];
+      const auto& seg = per_thread[std::size_t(t)].segments[l];
+      const auto& buf = per_thread[std::size_t(t)].buffers[l];
       for (std::size_t k = 0; k < seg.size(); ++k) {
         const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : std::uint32_t(buf.size());
         std::copy(buf.begin() + seg[k].begin, buf.begin() + end,

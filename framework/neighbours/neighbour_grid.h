@@ -44,7 +44,6 @@ class NeighbourGrid {
  private:
   struct CellRange {
     std::uint32_t begin, end;
-    std::int8_t offset[3];  // the neighbour cell relative to the particle's cell
   };
   std::uint64_t key_of(const Vec3& x) const;
   void cell_coords(const Vec3& x, std::uint32_t c[3]) const;
@@ -67,9 +66,22 @@ class NeighbourGrid {
   struct Segment {
     std::uint32_t particle, begin;
   };
+  // The candidates of one cell's 27 neighbour cells as coordinate arrays (one per thread).
+  struct CandidateBuffer {
+    std::vector<Real> x, y, z, d2;
+    std::vector<std::uint32_t> slot, hit;  // sorted slot of each candidate; indices of hits
+    std::size_t gather(const CellRange* ranges, int count, const Vec3* sorted_x);
+  };
+  // One thread's result buffers, on cache lines of its own: threads appending to vectors whose
+  // headers shared a line slowed the whole scan down (false sharing).
+  static constexpr std::size_t kMaxLists = 4;
+  struct alignas(64) ThreadScratch {
+    std::vector<std::uint32_t> buffers[kMaxLists];  // neighbour indices, by list
+    std::vector<Segment> segments[kMaxLists];       // where each particle's run starts, by list
+    CandidateBuffer candidates;
+  };
   struct Scratch {
-    std::vector<std::vector<std::vector<std::uint32_t>>> buffers;  // [thread][list]
-    std::vector<std::vector<Segment>> segments;                    // [thread * lists + list]
+    std::vector<ThreadScratch> threads;
   };
   mutable Scratch scratch_;
   std::vector<ParticleType> sorted_type_;
