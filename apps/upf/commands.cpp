@@ -1,13 +1,19 @@
 #include "commands.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <optional>
 
+#include "app_registry.h"
+#include "framework/compare/compare_report.h"
+#include "framework/compare/comparison.h"
+#include "framework/compare/report_table.h"
 #include "framework/core/errors.h"
 #include "framework/run/simulation_run.h"
 #include "framework/scene/scene_reader.h"
+#include "framework/scene/solver_override.h"
 #include "framework/solver/registry.h"
-#include "app_registry.h"
 #include "progress.h"
 
 namespace upf::app {
@@ -24,7 +30,8 @@ void print_params(const std::vector<ParamSpec>& specs) {
 
 int run_command(const RunArgs& args) {
   const Registry registry = make_app_registry();
-  const SceneDescription scene = load_scene_file(args.scene, registry);
+  SceneDescription scene = load_scene_file(args.scene, registry);
+  if (!args.solver.empty()) scene = with_solver(scene, registry, args.solver);
   RunOptions options;
   options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / scene.name
                                          : std::filesystem::path(args.out_dir);
@@ -48,6 +55,62 @@ int run_command(const RunArgs& args) {
       r.wall_seconds, r.liquid_particles, r.fluid_particle_steps_per_second, r.mean_iterations);
   std::printf("output: %s (particles.pvd, metrics.csv, probes.csv, summary.json)\n",
               options.out_dir.string().c_str());
+  return 0;
+}
+
+namespace {
+// --plot-script, else $UPF_PLOT_SCRIPT, else the script in the source tree this binary was built
+// from (a compile definition), so a build directory works wherever it is.
+std::filesystem::path plot_script(const CompareArgs& args) {
+  if (!args.plot_script.empty()) return args.plot_script;
+  if (const char* env = std::getenv("UPF_PLOT_SCRIPT"); env && *env) return env;
+  return UPF_PLOT_SCRIPT;
+}
+}  // namespace
+
+int compare_command(const CompareArgs& args) {
+  const Registry registry = make_app_registry();
+  const SceneDescription scene = load_scene_file(args.scene, registry);
+  const auto plan = plan_comparison(
+      scene, registry, args.solvers_given ? args.solvers : solvers_for_scene(scene, registry));
+
+  CompareOptions options;
+  options.out_dir = args.out_dir;
+  options.threads = args.threads;
+  options.end_time = args.end_time;
+  options.write_frames = !args.no_frames;
+  // A fresh progress line per run: each run's clock starts at zero.
+  std::optional<ProgressReporter> progress;
+  if (!args.quiet) {
+    options.on_run_start = [&](const SolverRunPlan& p, std::size_t i, std::size_t n) {
+      std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, n, p.solver.c_str());
+      progress.emplace(stderr);
+    };
+    options.on_progress = [&](const RunProgress& p) { progress->update(p); };
+    options.on_run_end = [&](const CompareRow& row) {
+      progress->finish();
+      std::fprintf(stderr, "%s: %s (%.2f s wall)\n", row.solver.c_str(), status_text(row).c_str(),
+                   row.result.wall_seconds);
+    };
+  }
+  Comparison comparison;
+  try {
+    comparison = run_comparison(plan, registry, options);
+  } catch (...) {
+    if (progress) progress->finish();
+    throw;
+  }
+
+  const PlotOutcome plots = write_compare_report(comparison, options.out_dir, plot_script(args));
+  std::printf("%s", format_text_table(make_report_table(comparison)).c_str());
+  const std::string out = options.out_dir.string();
+  std::printf("report: %s/report.md, %s/report.html, %s/report.json\n", out.c_str(), out.c_str(),
+              out.c_str());
+  if (!plots.ok) {
+    std::fprintf(stderr, "error: the plots are missing: %s\n(the tables were written)\n",
+                 plots.error.c_str());
+    return static_cast<int>(ExitCode::Failure);
+  }
   return 0;
 }
 

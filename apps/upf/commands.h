@@ -14,9 +14,23 @@ struct RunArgs {
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;
+  std::string solver;  // empty: the scene's own solvers
+};
+
+struct CompareArgs {
+  std::string scene;
+  std::vector<std::string> solvers;
+  bool solvers_given = false;  // false: every registered solver the scene has particles for
+  std::string out_dir = "out/compare";
+  int threads = 0;
+  std::optional<double> end_time;
+  bool quiet = false;
+  bool no_frames = false;
+  std::string plot_script;  // empty: $UPF_PLOT_SCRIPT, else the source tree's script
 };
 
 int run_command(const RunArgs& args);
+int compare_command(const CompareArgs& args);
 int validate_command(const std::vector<std::string>& files);
 int info_command();
 

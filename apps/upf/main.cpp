@@ -1,14 +1,28 @@
 // upf: the command-line program. Thin: it parses arguments and calls the framework.
-//   upf run SCENE [--out DIR] [--threads N] [--end T] [--quiet]
+//   upf run SCENE [--out DIR] [--threads N] [--end T] [--quiet] [--solver NAME]
+//   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
 //   upf validate SCENE...
 //   upf info
-// Exit codes: 0 ok, 1 other failure (output), 2 bad input, 3 unstable run.
+// Exit codes: 0 ok, 1 other failure (output, compare's plots), 2 bad input, 3 unstable run.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 
 #include "commands.h"
 #include "framework/core/errors.h"
+
+namespace {
+// The options `run` and `compare` share, with the same meaning.
+void add_run_controls(CLI::App& command, int& threads, std::optional<double>& end_time, bool& quiet,
+                      bool& no_frames) {
+  command.add_option("--threads,-j", threads, "CPU threads (default: all)")
+      ->check(CLI::Range(1, 1024));
+  command.add_option("--end", end_time, "end time in seconds, overriding the scene's")
+      ->check(CLI::PositiveNumber);
+  command.add_flag("--quiet,-q", quiet, "no progress output");
+  command.add_flag("--no-frames", no_frames, "write metrics and probes only");
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using upf::ExitCode;
@@ -22,12 +36,26 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "run a scene: frames, metrics and probes into --out");
   run->add_option("scene", run_args.scene, "scene file (JSON)")->required();
   run->add_option("--out,-o", run_args.out_dir, "output directory (default out/<scene name>)");
-  run->add_option("--threads,-j", run_args.threads, "CPU threads (default: all)")
-      ->check(CLI::Range(1, 1024));
-  run->add_option("--end", run_args.end_time, "end time in seconds, overriding the scene's")
-      ->check(CLI::PositiveNumber);
-  run->add_flag("--quiet,-q", run_args.quiet, "no progress output");
-  run->add_flag("--no-frames", run_args.no_frames, "write metrics and probes only");
+  add_run_controls(*run, run_args.threads, run_args.end_time, run_args.quiet, run_args.no_frames);
+  run->add_option("--solver", run_args.solver,
+                  "move every material of the solver's particle type with this solver");
+
+  upf::app::CompareArgs compare_args;
+  auto* compare = app.add_subcommand(
+      "compare", "run a scene once per solver into OUT/<solver>/, then report and plot");
+  compare->add_option("scene", compare_args.scene, "scene file (JSON)")->required();
+  auto* solvers =
+      compare
+          ->add_option("--solvers", compare_args.solvers,
+                       "comma-separated solver names (default: every registered solver the "
+                       "scene has particles for)")
+          ->delimiter(',');
+  compare->add_option("--out,-o", compare_args.out_dir, "output directory")->capture_default_str();
+  add_run_controls(*compare, compare_args.threads, compare_args.end_time, compare_args.quiet,
+                   compare_args.no_frames);
+  compare->add_option("--plot-script", compare_args.plot_script,
+                      "the plotting script (default: $UPF_PLOT_SCRIPT, else "
+                      "scripts/plot_compare.py of the source tree)");
 
   std::vector<std::string> validate_files;
   auto* validate = app.add_subcommand("validate", "check scene files; list every problem");
@@ -44,6 +72,10 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return upf::app::run_command(run_args);
+    if (*compare) {
+      compare_args.solvers_given = solvers->count() > 0;
+      return upf::app::compare_command(compare_args);
+    }
     if (*validate) return upf::app::validate_command(validate_files);
     if (*info) return upf::app::info_command();
   } catch (const upf::InputError& e) {

@@ -12,6 +12,7 @@
 #include "framework/output/vtp_writer.h"
 #include "framework/run/metrics_log.h"
 #include "framework/run/probes.h"
+#include "framework/run/run_result_json.h"
 #include "framework/scene/scene_builder.h"
 
 namespace upf {
@@ -56,36 +57,29 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// Which solver moves each material, with its parameters: shows what `--solver` chose.
+nlohmann::json materials_json(const SceneDescription& scene) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& m : scene.materials) {
+    nlohmann::json& j = out[m.name];
+    j["type"] = std::string(to_string(m.type));
+    j["solver"] = m.solver.empty() ? nlohmann::json(nullptr) : nlohmann::json(m.solver);
+    if (!m.solver.empty()) j["solver_params"] = m.solver_params.all();
+  }
+  return out;
+}
+
 void write_summary(const std::filesystem::path& path, const SceneDescription& scene,
-                   const RunResult& r, int threads, const std::vector<double>& step_ms,
+                   const RunResult& r, const std::vector<double>& step_ms,
                    const std::vector<std::pair<std::string, std::vector<double>>>& stages) {
-  nlohmann::json j;
+  nlohmann::json j = run_result_json(r);
   j["scene"] = scene.name;
   j["source"] = scene.source.string();
-  j["status"] = r.status;
-  if (!r.failure.empty()) j["failure"] = r.failure;
-  j["threads"] = threads;
-  j["steps"] = r.steps;
-  j["simulated_time_s"] = r.simulated_time;
-  j["wall_time_s"] = r.wall_seconds;
-  j["particles"] = {{"liquid", r.liquid_particles}, {"total", r.total_particles}};
-  j["frames"] = r.frames;
-  j["mean_dt_s"] = r.mean_dt;
-  j["mean_pressure_iterations"] = r.mean_iterations;
-  j["max_pressure_iterations"] = r.max_iterations;
-  j["mean_avg_density_error"] = r.mean_avg_density_error;
-  j["max_density_error"] = r.max_density_error;
+  j["materials"] = materials_json(scene);
   j["median_step_ms"] = median(step_ms);
   nlohmann::json stage_json = nlohmann::json::object();
   for (const auto& [name, values] : stages) stage_json[name] = median(values);
   j["median_stage_ms"] = stage_json;
-  j["fluid_particle_steps_per_second"] = r.fluid_particle_steps_per_second;
-  j["wall_seconds_per_simulated_second"] =
-      r.simulated_time > 0 ? r.wall_seconds / r.simulated_time : 0.0;
-  nlohmann::json probes = nlohmann::json::object();
-  for (const auto& [name, value] : r.final_probes)
-    probes[name] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-  j["final_probes"] = probes;
   write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
@@ -103,6 +97,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   RunResult result;
   result.liquid_particles = particles.count(ParticleType::Liquid);
   result.total_particles = particles.size();
+  result.threads = world->executor().threads();
 
   FrameWriter frames(options.out_dir, scene, options.write_frames);
   MetricsLog metrics(options.out_dir / "metrics.csv");
@@ -146,18 +141,19 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     result.steps = world->step_count();
     result.simulated_time = world->time();
     result.frames = frames.frames();
-    if (result.steps) {
-      result.mean_dt = sum_dt / double(result.steps);
-      result.mean_iterations = sum_iterations / double(result.steps);
-      result.mean_avg_density_error = sum_avg_error / double(result.steps);
+    // Means over the steps that were recorded: an unstable run's failed step counts in
+    // `steps` but has no figures.
+    if (const double recorded = double(step_ms.size()); recorded > 0) {
+      result.mean_dt = sum_dt / recorded;
+      result.mean_iterations = sum_iterations / recorded;
+      result.mean_avg_density_error = sum_avg_error / recorded;
     }
     double compute_s = 0;
     for (double ms : step_ms) compute_s += ms / 1000.0;
     if (compute_s > 0)
       result.fluid_particle_steps_per_second =
           double(result.liquid_particles) * double(result.steps) / compute_s;
-    write_summary(options.out_dir / "summary.json", scene, result, world->executor().threads(),
-                  step_ms, stages);
+    write_summary(options.out_dir / "summary.json", scene, result, step_ms, stages);
   };
 
   try {
@@ -198,7 +194,8 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     result.status = "unstable";
     result.failure = e.what();
     finish();
-    throw;
+    if (options.throw_on_instability) throw;
+    return result;
   }
   finish();
   return result;

@@ -29,13 +29,17 @@ struct RunOptions {
   bool write_frames = true;
   std::function<void(const RunProgress&)> on_progress;  // called after every step
   std::function<void(const World&)> on_step;            // tests and tools look at the world
+  // False: an instability ends the run with status "unstable" instead of throwing, so a
+  // comparison keeps the figures of the steps that did succeed.
+  bool throw_on_instability = true;
 };
 
 struct RunResult {
   std::string status = "completed";  // or "unstable"
   std::string failure;
   std::uint64_t steps = 0;
-  double simulated_time = 0;
+  double simulated_time = 0;  // unstable: the time the failed step reached
+  int threads = 0;
   double wall_seconds = 0;
   std::size_t liquid_particles = 0;
   std::size_t total_particles = 0;

@@ -1,0 +1,50 @@
+#include "framework/compare/comparison.h"
+
+#include <ctime>
+#include <stdexcept>
+
+namespace upf {
+
+namespace {
+std::string utc_now_iso8601() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+}  // namespace
+
+Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry& registry,
+                          const CompareOptions& options) {
+  if (plan.empty()) throw std::invalid_argument("run_comparison: no solver to run");
+  const SceneDescription& scene = plan.front().scene;
+  Comparison c;
+  c.scene = scene.name;
+  c.source = scene.source.string();
+  c.end_time = options.end_time.value_or(scene.world.time.end);
+  c.date = utc_now_iso8601();
+  for (const auto& p : scene.probes) c.probes.push_back(p.name);
+
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    if (options.on_run_start) options.on_run_start(plan[i], i, plan.size());
+    RunOptions run;
+    run.out_dir = options.out_dir / plan[i].solver;
+    run.threads = options.threads;
+    run.end_time = options.end_time;
+    run.write_frames = options.write_frames;
+    run.on_progress = options.on_progress;
+    run.throw_on_instability = false;  // an unstable solver is a result of the comparison
+    CompareRow row{plan[i].solver, run_simulation(plan[i].scene, registry, run)};
+    // Every run builds the same particles with the same threads: any row gives the counts.
+    c.liquid_particles = row.result.liquid_particles;
+    c.total_particles = row.result.total_particles;
+    c.threads = row.result.threads;
+    if (options.on_run_end) options.on_run_end(row);
+    c.rows.push_back(std::move(row));
+  }
+  return c;
+}
+
+}  // namespace upf

@@ -1,0 +1,167 @@
+// `upf compare` as a user meets it: one run per registered liquid solver on a small dam break,
+// one report row each, plots of the stated pixel size that are not blank; unstable solvers get
+// their row; a bad solver list stops before anything runs; missing plots keep the tables.
+#include <sstream>
+
+#include "framework/compare/python_runner.h"
+#include "framework/solver/registry.h"
+#include "solvers/register_builtin_solvers.h"
+#include "tests/cli/cli_support.h"
+
+namespace {
+
+using namespace upf::cli_test;
+
+// Every liquid solver `upf` is built with: covers each new solver once it is registered.
+std::vector<std::string> liquid_solvers() {
+  upf::Registry registry;
+  upf::register_builtins(registry);
+  std::vector<std::string> names;
+  for (const auto& s : registry.solvers())
+    if (s.type == upf::ParticleType::Liquid) names.push_back(s.name);
+  return names;
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ",") + n;
+  return out;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+std::size_t count(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+// Runs use one thread: on a shared machine, two OpenMP threads can spend most of their time
+// waiting for each other.
+class Compare : public Cli {
+ protected:
+  // About 1,500 liquid and 5,000 wall particles.
+  std::string small_scene(double end) {
+    auto doc = sample();
+    doc["time"]["end"] = end;
+    return write(doc);
+  }
+  fs::path out() const { return dir_ / "out"; }
+};
+
+TEST_F(Compare, EverySolverGetsARowAReportAndPlots) {
+  const auto solvers = liquid_solvers();
+  ASSERT_FALSE(solvers.empty());
+  const Result r = run_upf("compare " + small_scene(0.2) + " --solvers " + join(solvers) +
+                           " --out " + out().string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+
+  const std::string md = read_text(out() / "report.md");
+  const auto report = read_json(out() / "report.json");
+  ASSERT_EQ(report["rows"].size(), solvers.size());
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const std::string& s = solvers[i];
+    EXPECT_EQ(count(md, "\n| " + s + " | completed |"), 1u) << s << "\n" << md;
+    EXPECT_NE(r.output.find(s), std::string::npos) << "the table on stdout names " << s;
+    EXPECT_EQ(report["rows"][i]["solver"], s);
+    EXPECT_EQ(report["rows"][i]["status"], "completed");
+    for (const char* f : {"particles.pvd", "metrics.csv", "probes.csv", "summary.json"})
+      EXPECT_TRUE(fs::exists(out() / s / f)) << s << "/" << f;
+  }
+  EXPECT_EQ(report["threads"], 1);
+  EXPECT_GT(report["particles"]["liquid"].get<int>(), 0);
+  EXPECT_TRUE(fs::exists(out() / "report.html"));
+  EXPECT_NE(read_text(out() / "report.html").find("<img src=\"density_error.png\""),
+            std::string::npos);
+
+  // The plots: the size the docs state, decoded by Python, and not blank.
+  const auto& plots = report["plots"];
+  EXPECT_EQ(plots["status"], "drawn");
+  EXPECT_EQ(plots["width_px"], 1200);
+  EXPECT_EQ(plots["height_px"], 700);
+  std::vector<std::string> args = {"1200", "700"};
+  for (const auto& p : plots["files"])
+    args.push_back((out() / p["file"].get<std::string>()).string());
+  EXPECT_EQ(args.size(), 2 + 2 + sample()["probes"].size()) << "density error, dt, each probe";
+  const fs::path log = dir_ / "check_png.log";
+  const auto check = upf::run_python_script(
+      fs::path(UPF_SOURCE_DIR) / "tests" / "cli" / "check_png.py", args, log);
+  EXPECT_TRUE(check.ok) << check.error << "\n" << read_text(log);
+}
+
+TEST_F(Compare, UnstableSolversGetARowWithTheFailure) {
+  auto doc = sample();
+  doc["time"]["end"] = 0.2;
+  doc["stability"]["max_speed"] = 0.5;  // the falling column exceeds it within ~0.05 s
+  const auto solvers = liquid_solvers();
+  const Result r = run_upf("compare " + write(doc) + " --solvers " + join(solvers) + " --out " +
+                           out().string() + " --no-frames --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << "an instability is a result of the comparison\n" << r.output;
+  const auto report = read_json(out() / "report.json");
+  ASSERT_EQ(report["rows"].size(), solvers.size());
+  for (const auto& row : report["rows"]) {
+    EXPECT_EQ(row["status"], "unstable");
+    EXPECT_NE(row["failure"].get<std::string>().find("speed"), std::string::npos);
+    const double t = row["failure_time_s"].get<double>();
+    EXPECT_GT(t, 0);
+    EXPECT_LT(t, 0.2);
+  }
+  const std::string md = read_text(out() / "report.md");
+  EXPECT_EQ(count(md, " | unstable at t = "), solvers.size()) << md;
+  EXPECT_NE(md.find("## Failures"), std::string::npos);
+}
+
+TEST_F(Compare, BadSolverListsAreRejectedBeforeAnythingRuns) {
+  const std::string scene = small_scene(0.2);
+  const std::string first = liquid_solvers().front();
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"pcisp", {"unknown solver 'pcisp'", "did you mean 'pcisph'", "registered solvers: "}},
+      {first + ",nope", {"unknown solver 'nope'"}},
+      {first + "," + first, {"'" + first + "' is listed twice"}},
+      {"''", {"empty solver name"}},
+      {",", {"--solvers"}},
+  };
+  for (const auto& [list, needles] : cases) {
+    const Result r =
+        run_upf("compare " + scene + " --solvers " + list + " --out " + out().string() + " -q");
+    EXPECT_EQ(r.code, 2) << list << "\n" << r.output;
+    for (const auto& n : needles) EXPECT_NE(r.output.find(n), std::string::npos) << n << r.output;
+    EXPECT_FALSE(fs::exists(out())) << list << ": nothing may run";
+  }
+}
+
+TEST_F(Compare, MissingPlotsKeepTheTablesAndExitOne) {
+  const fs::path broken = dir_ / "broken.py";
+  std::ofstream(broken) << "raise SystemExit('broken on purpose')\n";
+  const std::string base = "compare " + small_scene(0.02) + " --out " + out().string() +
+                           " --no-frames --threads 1 -q --solvers " + liquid_solvers().front();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {base + " --plot-script " + (dir_ / "nope.py").string(), "not found"},
+      {base + " --plot-script " + broken.string(), "broken on purpose"},
+  };
+  for (const auto& [args, why] : cases) {
+    const Result r = run_upf(args);
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("the plots are missing"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
+    EXPECT_NE(read_text(out() / "report.md").find("The plots are missing"), std::string::npos);
+    EXPECT_NE(read_text(out() / "report.md").find("| completed |"), std::string::npos);
+    EXPECT_TRUE(fs::exists(out() / "report.html"));
+    EXPECT_EQ(read_json(out() / "report.json")["plots"]["status"], "missing");
+  }
+  const Result r = run_upf(base, "UPF_PYTHON=/nonexistent/python3");
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("cannot start /nonexistent/python3"), std::string::npos) << r.output;
+}
+
+}  // namespace
