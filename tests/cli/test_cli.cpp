@@ -2,33 +2,19 @@
 // culprit (file and JSON path), an unstable run gives exit code 3 after writing the last good
 // frame, and a good run writes its outputs.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "run_upf.h"
+
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Result {
-  int code;
-  std::string output;
-};
-
-Result run_upf(const std::string& args) {
-  const std::string command = std::string(UPF_EXECUTABLE) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), int(buffer.size()), pipe)) output += buffer.data();
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using Result = upf::testing::UpfResult;
+using upf::testing::run_upf;
 
 class Cli : public ::testing::Test {
  protected:
@@ -131,6 +117,28 @@ TEST_F(Cli, RunWritesOutputs) {
   const auto s = nlohmann::json::parse(summary);
   EXPECT_EQ(s["status"], "completed");
   EXPECT_NEAR(s["simulated_time_s"].get<double>(), 0.1, 1e-9);
+}
+
+TEST_F(Cli, OutputFieldNoSolverExportsStopsTheRunBeforeWriting) {
+  // Which fields exist is known once the solvers have created theirs: the run checks the names
+  // after preparing the world and before writing anything but the output directory.
+  auto doc = sample();
+  doc["output"]["fields"] = {"density", "presure"};
+  const fs::path out = dir_ / "out";
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " -q");
+  EXPECT_EQ(r.code, 2) << r.output;
+  for (const char* s : {"/output/fields/1", "'presure'", "did you mean 'pressure'",
+                        "fields available: density, pressure"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
+  EXPECT_TRUE(fs::is_directory(out));
+  EXPECT_TRUE(fs::is_empty(out)) << "nothing but the directory is written";
+}
+
+TEST_F(Cli, OutputFieldsMustBeNames) {
+  auto doc = sample();
+  doc["output"]["fields"] = {"density", 3, ""};
+  expect_rejected(doc, {"/output/fields/1", "expected a field name, found a number",
+                        "/output/fields/2", "found an empty string"});
 }
 
 TEST_F(Cli, InstabilityExitsThreeAfterWritingLastGoodFrame) {
