@@ -7,6 +7,7 @@ namespace upf::app {
 Registry make_app_registry() {
   Registry registry;
   register_builtins(registry);
+  register_extensions(registry);
   return registry;
 }
 

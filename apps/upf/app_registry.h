@@ -5,5 +5,11 @@
 #include "framework/solver/registry.h"
 
 namespace upf::app {
+
 Registry make_app_registry();
+
+// Registers the extensions listed in UPF_EXTENSION_DIRS. Defined in a source file that CMake
+// generates (cmake/UpfExtensions.cmake), so adding an extension edits nothing here.
+void register_extensions(Registry& registry);
+
 }  // namespace upf::app

@@ -18,9 +18,9 @@ namespace upf {
 // Writes `particles` to `path` atomically (see write_file_atomically). Point data always holds
 // "id" (UInt32), "type" (UInt8), "material" (UInt16) and "velocity" (3 components), then each
 // named field of `fields` in order, scalar or vector; names that match no field, or repeat one
-// already written, are skipped (the scene validator reports unknown names earlier). Positions and
-// real-valued fields are written as Float32, or Float64 when upf::Real is double. Throws
-// OutputError if the file cannot be written; the directory must exist.
+// already written, are skipped (run_simulation reports unknown names before the first frame).
+// Positions and real-valued fields are written as Float32, or Float64 when upf::Real is double.
+// Throws OutputError if the file cannot be written; the directory must exist.
 void write_vtp(const std::filesystem::path& path, const Particles& particles,
                const std::vector<std::string>& fields);
 

@@ -13,18 +13,50 @@
 #include "framework/run/metrics_log.h"
 #include "framework/run/probes.h"
 #include "framework/run/run_result_json.h"
+#include "framework/scene/json_input.h"
 #include "framework/scene/scene_builder.h"
 
 namespace upf {
 
 namespace {
 
+// The fields to write in each frame: those the scene names, or every exported field when it
+// names none. Only the solvers know which fields exist, so this runs after World::prepare(); a
+// name that no solver exports is bad input, reported under its JSON path with the names there are
+// (exported fields only: they are the ones kept in the last good state after an instability).
+std::vector<std::string> check_output_fields(const SceneDescription& scene,
+                                             const Particles& particles) {
+  std::vector<std::string> available;
+  for (const auto& [name, field] : particles.scalar_fields())
+    if (field.exported) available.push_back(name);
+  for (const auto& [name, field] : particles.vector_fields())
+    if (field.exported) available.push_back(name);
+  std::sort(available.begin(), available.end());
+  if (!scene.output.fields) return available;
+
+  std::string list;
+  for (const auto& name : available) list += (list.empty() ? "" : ", ") + name;
+  std::vector<InputProblem> problems;
+  const auto& fields = *scene.output.fields;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (std::find(available.begin(), available.end(), fields[i]) != available.end()) continue;
+    std::string msg = "no solver of this scene exports a field '" + fields[i] + "'";
+    if (auto guess = did_you_mean(fields[i], available)) msg += " (did you mean '" + *guess + "'?)";
+    msg += "; fields available: " + (list.empty() ? std::string("none") : list);
+    problems.push_back(
+        {scene.source.string() + ":" + JsonInput::child("/output/fields", i), std::move(msg)});
+  }
+  if (!problems.empty()) throw InputError(std::move(problems));
+  return fields;
+}
+
 // Writes frame files and keeps the .pvd series that ParaView opens as a time series.
 class FrameWriter {
  public:
-  FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene, bool enabled)
+  FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
+              std::vector<std::string> fields, bool enabled)
       : out_dir_(out_dir),
-        fields_(scene.output.fields),
+        fields_(std::move(fields)),
         enabled_(enabled && scene.output.vtp),
         series_(out_dir / "particles.pvd") {
     if (enabled_) ensure_directory(out_dir / "frames");
@@ -91,6 +123,8 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   auto world = build_world(scene, registry, options.threads);
   world->prepare();
   const Particles& particles = world->particles();
+  // Before anything is written: a misspelt field stops the run with nothing but the directory.
+  std::vector<std::string> fields = check_output_fields(scene, particles);
   const double end = options.end_time.value_or(scene.world.time.end);
   const Real spacing = scene.world.spacing;
 
@@ -99,7 +133,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   result.total_particles = particles.size();
   result.threads = world->executor().threads();
 
-  FrameWriter frames(options.out_dir, scene, options.write_frames);
+  FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames);
   MetricsLog metrics(options.out_dir / "metrics.csv");
   std::vector<std::string> probe_names;
   for (const auto& p : scene.probes) probe_names.push_back(p.name);

@@ -48,7 +48,9 @@ struct ProbeDesc {
 
 struct OutputDesc {
   double fps = 30;
-  std::vector<std::string> fields{"density", "pressure"};
+  // Exported fields to write in each frame, checked against the fields the solvers create when
+  // the run starts (the reader checks the syntax only). Absent: every exported field, by name.
+  std::optional<std::vector<std::string>> fields;
   bool vtp = true;
 };
 

@@ -16,7 +16,6 @@ const std::vector<std::string> kTopKeys = {
     "name",         "description", "gravity", "particle_spacing", "materials", "containers",
     "fluid_blocks", "time",        "output",  "probes",           "stability", "neighbours"};
 const std::vector<std::string> kAxisNames = {"x", "y", "z"};
-const std::vector<std::string> kKnownFields = {"density", "pressure"};
 
 std::optional<int> read_axis(JsonInput& in, const json& object, const std::string& path,
                              std::string_view key, std::optional<int> fallback) {
@@ -320,27 +319,23 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   if (auto it = doc.find("output"); it != doc.end() && in.expect_object(*it, "/output")) {
     in.check_keys(*it, "/output", {"fps", "fields", "formats"});
     scene.output.fps = in.number(*it, "/output", "fps", scene.output.fps, 0, 1e6, true, "1/s");
+    // Field names only: which fields exist is known once the solvers have created theirs, so
+    // the run checks the names (check_output_fields in framework/run).
     if (auto f = it->find("fields"); f != it->end()) {
-      scene.output.fields.clear();
+      scene.output.fields.emplace();
       if (!f->is_array()) {
         in.problem("/output/fields", "expected an array of field names");
       } else {
         for (std::size_t i = 0; i < f->size(); ++i) {
           const std::string path = JsonInput::child("/output/fields", i);
           const json& name = (*f)[i];
-          if (!name.is_string()) {
-            in.problem(path, "expected a field name, found " + json_type_name(name));
+          const bool empty = name.is_string() && name.get<std::string>().empty();
+          if (!name.is_string() || empty) {
+            in.problem(path, "expected a field name, found " +
+                                 (empty ? std::string("an empty string") : json_type_name(name)));
             continue;
           }
-          const std::string s = name.get<std::string>();
-          if (std::find(kKnownFields.begin(), kKnownFields.end(), s) == kKnownFields.end()) {
-            std::string msg = "unknown field '" + s + "'";
-            if (auto guess = did_you_mean(s, kKnownFields))
-              msg += " (did you mean '" + *guess + "'?)";
-            in.problem(path, msg);
-            continue;
-          }
-          scene.output.fields.push_back(s);
+          scene.output.fields->push_back(name.get<std::string>());
         }
       }
     }

@@ -77,6 +77,28 @@ TEST_F(Cli, RunWritesOutputs) {
   EXPECT_NEAR(s["simulated_time_s"].get<double>(), 0.1, 1e-9);
 }
 
+TEST_F(Cli, OutputFieldNoSolverExportsStopsTheRunBeforeWriting) {
+  // Which fields exist is known once the solvers have created theirs: the run checks the names
+  // after preparing the world and before writing anything but the output directory.
+  auto doc = sample();
+  doc["output"]["fields"] = {"density", "presure"};
+  const fs::path out = dir_ / "out";
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " -q");
+  EXPECT_EQ(r.code, 2) << r.output;
+  for (const char* s : {"/output/fields/1", "'presure'", "did you mean 'pressure'",
+                        "fields available: density, pressure"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
+  EXPECT_TRUE(fs::is_directory(out));
+  EXPECT_TRUE(fs::is_empty(out)) << "nothing but the directory is written";
+}
+
+TEST_F(Cli, OutputFieldsMustBeNames) {
+  auto doc = sample();
+  doc["output"]["fields"] = {"density", 3, ""};
+  expect_rejected(doc, {"/output/fields/1", "expected a field name, found a number",
+                        "/output/fields/2", "found an empty string"});
+}
+
 TEST_F(Cli, InstabilityExitsThreeAfterWritingLastGoodFrame) {
   auto doc = sample();
   doc["stability"]["max_speed"] = 0.5;  // the falling column exceeds it within ~0.05 s

@@ -1,11 +1,14 @@
 // Helpers for physics tests: load a shipped sample, adjust it, build and step its world.
 #pragma once
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "framework/scene/scene_builder.h"
 #include "framework/scene/scene_reader.h"
@@ -29,7 +32,12 @@ struct TestWorld {
   SceneDescription scene;
   std::unique_ptr<World> world;
 
-  TestWorld(const nlohmann::json& doc, int threads) {
+  TestWorld(const nlohmann::json& doc, int threads) { start(doc, threads); }
+  // With another registry: the built-ins plus an extension's solvers, say.
+  TestWorld(const nlohmann::json& doc, int threads, Registry with) : registry(std::move(with)) {
+    start(doc, threads);
+  }
+  void start(const nlohmann::json& doc, int threads) {
     scene = read_scene(doc, registry, "test");
     world = build_world(scene, registry, threads);
     world->prepare();
@@ -39,5 +47,32 @@ struct TestWorld {
     while (world->time() < t - 1e-12) world->step(world->next_time_step_until(t));
   }
 };
+
+// Positions and velocities by stable id: states compared across thread counts or orderings.
+using StateById = std::map<ParticleId, std::pair<Vec3, Vec3>>;
+
+inline StateById state_by_id(const Particles& p) {
+  StateById state;
+  for (std::size_t i = 0; i < p.size(); ++i) state[p.id[i]] = {p.position[i], p.velocity[i]};
+  return state;
+}
+
+inline bool bitwise_equal(const Vec3& a, const Vec3& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// How many particles of `a` differ from `b` in some bit of position or velocity; with
+// `positions_only`, of position (a run against its start: how many moved).
+inline std::size_t bitwise_differences(const StateById& a, const StateById& b,
+                                       bool positions_only = false) {
+  std::size_t differing = 0;
+  for (const auto& [id, s] : a) {
+    const auto& t = b.at(id);
+    const bool same =
+        bitwise_equal(s.first, t.first) && (positions_only || bitwise_equal(s.second, t.second));
+    differing += same ? 0 : 1;
+  }
+  return differing;
+}
 
 }  // namespace upf::testing

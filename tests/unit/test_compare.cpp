@@ -26,7 +26,11 @@ class RunawaySolver : public Solver {
   RunawaySolver(const ParamValues& params, std::vector<MaterialId> materials)
       : acceleration_(Real(params.get("acceleration"))), materials_(std::move(materials)) {}
   std::string_view name() const override { return "runaway"; }
-  void prepare(World&) override {}
+  // Exports the fields every fluid solver exports, which the sample scene asks for.
+  void prepare(World& world) override {
+    world.particles().scalar_field("density", 0, true);
+    world.particles().scalar_field("pressure", 0, true);
+  }
   Real max_time_step(const World&) const override { return Real(1); }
   void step(World& world, Real dt) override {
     Particles& p = world.particles();

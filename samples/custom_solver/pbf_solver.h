@@ -1,0 +1,89 @@
+// Position Based Fluids: Macklin & Müller 2013, "Position Based Fluids", ACM TOG 32(4),
+// SIGGRAPH 2013 (the fluid method of NVIDIA FleX). A sample of a solver added from outside the
+// framework: this folder is compiled into `upf` through UPF_EXTENSION_DIRS (docs/extending.md).
+//
+// One step (the paper's Algorithm 1):
+//   1 predict: v* = v + dt (g + shared viscosity),  x* = x + dt v*
+//   2 `iterations` times, Jacobi style: lambda_i from the density constraint C_i = rho_i/rho0 - 1
+//     at x*, then every dx_i from the lambdas and the artificial pressure s_corr, then x* += dx
+//     (formulas in pbf_kernels.h)
+//   3 v = (x* - x) / dt,  x = x*
+//   4 XSPH viscosity and, when `vorticity` > 0, vorticity confinement on the new velocities
+// Boundaries are frozen and rigid particles with Akinci et al. 2012 volumes, shared with every
+// fluid solver: they add to the density and to grad_i C_i and never move (inverse mass 0).
+//
+// Neighbour lists. The paper finds neighbours once per step, at the positions predicted with
+// gravity, and keeps them through the iterations while the corrections move the particles on.
+// Here the lists are those the world builds at the start of the step, at x, as for PCISPH. Under
+// the CFL limit a particle moves at most cfl * spacing = 0.2 H per step (cfl = 0.4, H = 2
+// spacing), so a pair that is not in the lists ends the prediction at least 0.8 H apart when one
+// of them is at rest (a wall), where the cubic spline is 1.6 % of its peak, and the typical
+// neighbour moves with its neighbours. The approximation is of the same order as the paper's own,
+// and a larger search radius would cost every solver in the world. The CFL limit is kept for
+// that reason and for accuracy: PBF is stable at any dt, but its compression grows as dt^2.
+//
+// Pressure. PBF has none, but its corrections are pressure accelerations in disguise: the
+// symmetric SPH pressure term with Akinci's boundary term, times dt^2, is dx_i of eq. 12 with
+// lambda_i = -dt^2 p_i / rho0. The exported field "pressure" is therefore -rho0 sum lambda / dt^2
+// over the iterations of the step (zero where nothing is compressed, as PCISPH's), so pressure
+// probes and comparisons with PCISPH work unchanged.
+//
+// Units: masses are real (m = rho0 h^3), so the paper's epsilon and k are made dimensionless
+// here, relative to the denominator of eq. 11 for a particle with a full neighbourhood on the
+// initial lattice (see param_specs()). Only compression is corrected by default (unilateral):
+// with the bilateral constraint of the paper, particles at the free surface, which lack
+// neighbours, pull towards the liquid and clump (SPlisHSPlasH's PBF clamps in the same way).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "framework/params/param_spec.h"
+#include "framework/solver/solver.h"
+#include "pbf_kernels.h"
+#include "solvers/fluid/fluid_view.h"
+
+namespace upf::pbf {
+
+class PbfSolver final : public Solver {
+ public:
+  PbfSolver(const ParamValues& params, std::vector<MaterialId> materials);
+
+  std::string_view name() const override { return "pbf"; }
+  void prepare(World& world) override;
+  Real max_time_step(const World& world) const override;
+  void step(World& world, Real dt) override;
+  SolverStats stats() const override { return stats_; }
+
+  static std::vector<ParamSpec> param_specs();
+  // The denominator of eq. 11 for a particle with a full neighbourhood on a cubic lattice of
+  // `spacing` with volumes spacing^3: the unit in which `relaxation` and `tensile_k` are given.
+  static double template_denominator(Real spacing, const CubicSplineKernel& kernel);
+
+ private:
+  // Loops over the particles this solver moves (an index list, split evenly between threads).
+  template <class Body>
+  void for_mine(const World& world, Body&& body) const;
+  void predict(World& world, const FluidView& f, Real dt);
+  void solve_constraints(World& world, const FluidView& f, Real dt);
+  void update_velocities(World& world, const FluidView& f, Real dt);
+
+  int iterations_;
+  double relaxation_, tensile_k_, tensile_dq_, xsph_, vorticity_;
+  int tensile_n_;
+  bool unilateral_;
+  std::vector<MaterialId> materials_;
+  FluidMaterialTable table_;
+  FluidNeighbourHandles lists_;
+  PbfConstants constants_;
+  Real max_viscosity_ = 0;
+  Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
+  SolverStats stats_;
+  std::vector<Vec3> fluid_gradient_;  // grad W_ij per fluid-list slot at x, for the viscosity
+  std::vector<Vec3> pair_gradient_;   // grad W_ij per fluid-list slot at x*, for one iteration
+  std::vector<Real> pair_tensile_;    // s_corr per fluid-list slot at x*, for one iteration
+  std::vector<std::uint8_t> owns_;    // per material: moved by this solver
+  std::vector<std::uint32_t> mine_;   // indices of the particles moved, rebuilt every step
+};
+
+}  // namespace upf::pbf
