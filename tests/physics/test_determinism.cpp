@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <map>
+#include <string>
 
 #include "scene_helpers.h"
 
@@ -36,9 +37,10 @@ void expect_identical(const std::map<ParticleId, std::pair<Vec3, Vec3>>& a,
   EXPECT_EQ(differing, 0u) << "particles whose position or velocity differ in some bit";
 }
 
-nlohmann::json small_dam_break() {
+nlohmann::json small_dam_break(const std::string& solver = "pcisph") {
   auto doc = testing::load_sample_json("dam_break.json");
   doc["particle_spacing"] = 0.04;
+  if (solver != "pcisph") doc["materials"]["water"]["solver"] = {{"name", solver}};
   return doc;
 }
 
@@ -52,6 +54,20 @@ TEST(Determinism, OneAndTwoThreadsGiveBitwiseIdenticalPositions) {
   for (const auto& [id, s] : one)
     if (!bitwise_equal(s.first, start.at(id).first)) ++moved;
   EXPECT_GT(moved, 1000u);
+}
+
+// SPH and WCSPH share PCISPH's reductions (compression_stats.h) and gather-only loops.
+TEST(Determinism, StateEquationSolversGiveBitwiseIdenticalPositions) {
+  for (const std::string solver : {"sph", "wcsph"}) {
+    SCOPED_TRACE(solver);
+    const auto one = run_steps(small_dam_break(solver), 1, 100);
+    expect_identical(one, run_steps(small_dam_break(solver), 2, 100));
+    const auto start = run_steps(small_dam_break(solver), 1, 0);
+    std::size_t moved = 0;
+    for (const auto& [id, s] : one)
+      if (!bitwise_equal(s.first, start.at(id).first)) ++moved;
+    EXPECT_GT(moved, 1000u);
+  }
 }
 
 TEST(Determinism, ReorderingParticlesChangesNoBit) {
