@@ -2,12 +2,16 @@
 
 #include "materials/register_materials.h"
 #include "solvers/pcisph/register_pcisph.h"
+#include "solvers/sph/register_sph.h"
+#include "solvers/wcsph/register_wcsph.h"
 
 namespace upf {
 
 void register_builtins(Registry& registry) {
   register_materials(registry);
   register_pcisph(registry);
+  register_sph(registry);
+  register_wcsph(registry);
 }
 
 }  // namespace upf

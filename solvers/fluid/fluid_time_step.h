@@ -20,6 +20,11 @@ Real max_liquid_speed_squared(const Particles& particles, const CpuExecutor& exe
 
 Real fluid_cfl_time_step(const World& world, Real max_viscosity, Real reference_speed);
 
+// For solvers whose pressure waves travel at a speed of sound c (SPH's sqrt(k), WCSPH's c):
+//   dt <= cfl * spacing / (c + |v|max)
+// and the viscous limit above.
+Real sound_speed_time_step(const World& world, Real cfl, Real sound_speed, Real max_viscosity);
+
 // sqrt(2 |g| H) with H the extent of the liquid along gravity (0 without gravity or liquid).
 Real free_fall_speed(const World& world);
 

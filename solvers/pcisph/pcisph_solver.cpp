@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/core/deterministic_sum.h"
 #include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
+#include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_time_step.h"
+#include "solvers/fluid/lattice_template.h"
 #include "solvers/pcisph/pcisph_kernels.h"
 
 namespace upf {
@@ -29,17 +30,13 @@ PcisphSolver::PcisphSolver(const ParamValues& params, std::vector<MaterialId> ma
 
 double PcisphSolver::template_delta_scale(Real spacing, const CubicSplineKernel& kernel) {
   // A particle with a full neighbourhood on the initial cubic lattice.
-  const int reach = int(std::ceil(kernel.support_radius() / spacing));
   Vec3 sum_grad{};
   double sum_grad2 = 0;
-  for (int i = -reach; i <= reach; ++i)
-    for (int j = -reach; j <= reach; ++j)
-      for (int k = -reach; k <= reach; ++k) {
-        const Vec3 r{Real(i) * spacing, Real(j) * spacing, Real(k) * spacing};
-        const Vec3 g = kernel.gradient(r);
-        sum_grad += g;
-        sum_grad2 += double(squared_norm(g));
-      }
+  for_each_lattice_offset(spacing, kernel.support_radius(), [&](const Vec3& r) {
+    const Vec3 g = kernel.gradient(r);
+    sum_grad += g;
+    sum_grad2 += double(squared_norm(g));
+  });
   const double denominator = double(squared_norm(sum_grad)) + sum_grad2;
   // m / rho0 = spacing^3 for lattice-sampled fluid, so beta = 2 dt^2 spacing^6.
   const double v = double(spacing) * spacing * spacing;
@@ -47,66 +44,41 @@ double PcisphSolver::template_delta_scale(Real spacing, const CubicSplineKernel&
 }
 
 void PcisphSolver::prepare(World& world) {
+  fluid_.prepare(world, materials_);
   Particles& p = world.particles();
-  p.scalar_field("density", 0, true);
-  p.scalar_field("pressure", 0, true);
   p.vector_field("pcisph.predicted_position");
-  p.vector_field("pcisph.pressure_acceleration");
-  p.vector_field("pcisph.other_acceleration");
-  p.vector_field("pcisph.boundary_gradient");
   p.scalar_field("pcisph.predicted_density");
-  lists_.request(world);
-  table_.load(world);
-  owns_.assign(world.materials().size(), 0);
-  for (MaterialId m : materials_) owns_[m] = 1;
-  max_viscosity_ = 0;
-  for (MaterialId m : materials_) max_viscosity_ = std::max(max_viscosity_, table_.viscosity[m]);
   reference_speed_ = free_fall_speed(world);
   delta_scale_ = template_delta_scale(world.settings().spacing, world.kernel());
 }
 
 Real PcisphSolver::max_time_step(const World& world) const {
-  return fluid_cfl_time_step(world, max_viscosity_, reference_speed_);
+  return fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
 }
 
 void PcisphSolver::step(World& world, Real dt) {
   Particles& p = world.particles();
   const CpuExecutor& exec = world.executor();
-  const std::size_t n = p.size();
-  const FluidView f = make_fluid_view(world, table_, lists_);
-  const ParticleType* type = p.type.data();
-  const Vec3 g = world.settings().gravity;
+  const FluidView f = fluid_.begin_step(world);
+  const OwnedParticles& owned = fluid_.owned;
+  auto for_mine = [&](auto&& body) { owned.for_each(exec, body); };
 
   Real* density = p.scalar_field("density").data();
   Real* pressure = p.scalar_field("pressure").data();
   Real* rho_star = p.scalar_field("pcisph.predicted_density").data();
   Vec3* x_star = p.vector_field("pcisph.predicted_position").data();
-  Vec3* a_p = p.vector_field("pcisph.pressure_acceleration").data();
-  Vec3* a_other = p.vector_field("pcisph.other_acceleration").data();
-  Vec3* boundary_gradient = p.vector_field("pcisph.boundary_gradient").data();
-  fluid_gradient_.resize(world.neighbours(lists_.fluid).total());
-  Vec3* fluid_gradient = fluid_gradient_.data();
-  // The particles this solver moves, as an index list: loops over it split evenly between
-  // threads (a static split of all particles did not: walls and water sit in different parts of
-  // the Morton order, and one thread waited for the other).
-  mine_.clear();
-  for (std::size_t i = 0; i < n; ++i)
-    if (type[i] == ParticleType::Liquid && owns_[p.material[i]]) mine_.push_back(std::uint32_t(i));
-  const std::uint32_t* mine = mine_.data();
-  auto for_mine = [&](auto&& body) {
-    exec.for_each(mine_.size(), [&](std::size_t k) { body(mine[k]); });
-  };
+  Vec3* a_p = fluid_.pressure_acceleration.data();
+  const Vec3* a_other = fluid_.other_acceleration.data();
+  const Vec3* boundary_gradient = fluid_.boundary_gradient.data();
+  const Vec3* fluid_gradient = fluid_.fluid_gradient.data();
 
   Stopwatch watch;
   stats_ = SolverStats{};
 
   // Non-pressure forces: density and kernel gradients at the current positions, then gravity +
-  // viscosity.
+  // viscosity. Pressures start from zero.
+  fluid_.shared_forces(world, f, density);
   for_mine([&](std::uint32_t i) {
-    density[i] = density_and_gradients(f, fluid_gradient, boundary_gradient[i], i);
-  });
-  for_mine([&](std::uint32_t i) {
-    a_other[i] = g + viscosity_acceleration(f, density, fluid_gradient, i);
     pressure[i] = 0;
     a_p[i] = Vec3{};
   });
@@ -116,10 +88,6 @@ void PcisphSolver::step(World& world, Real dt) {
   const double delta = delta_scale_ / (double(dt) * double(dt));
   double avg_error = 0;
   int iteration = 0;
-  auto relative_error = [&](std::uint32_t i) {
-    const Real rho0 = f.rest_density[f.material[i]];
-    return (rho_star[i] - rho0) / rho0;
-  };
   while (iteration < max_iterations_) {
     for_mine([&](std::uint32_t i) {
       const Vec3 v_star = f.v[i] + (a_other[i] + a_p[i]) * dt;
@@ -131,10 +99,7 @@ void PcisphSolver::step(World& world, Real dt) {
       pressure[i] = std::max(Real(0), pressure[i] + Real(delta) * (rho_star[i] - rho0));
     });
     // The stopping test sums in fixed point: the same iteration count for any thread count.
-    const double error_sum = fixed_point_sum(exec, mine_.size(), [&](std::size_t k) {
-      return std::max(0.0, double(relative_error(mine[k])));
-    });
-    avg_error = mine_.empty() ? 0.0 : error_sum / double(mine_.size());
+    avg_error = average_compression(exec, owned, f, rho_star);
     for_mine([&](std::uint32_t i) {
       a_p[i] = pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i], i);
     });
@@ -143,20 +108,11 @@ void PcisphSolver::step(World& world, Real dt) {
   }
   stats_.iterations = iteration;
   stats_.avg_density_error = avg_error;
-  Real max_error = 0;
-  const std::int64_t count = std::int64_t(mine_.size());
-#pragma omp parallel for schedule(static) reduction(max : max_error) num_threads(exec.threads())
-  for (std::int64_t k = 0; k < count; ++k) max_error = std::max(max_error, relative_error(mine[k]));
-  stats_.max_density_error = double(max_error);
+  stats_.max_density_error = max_compression(exec, owned, f, rho_star);
   stats_.stage_ms.emplace_back("pressure", watch.lap_ms());
 
   // Symplectic Euler with the final pressure forces.
-  Vec3* v = p.velocity.data();
-  Vec3* x = p.position.data();
-  for_mine([&](std::uint32_t i) {
-    v[i] += (a_other[i] + a_p[i]) * dt;
-    x[i] += v[i] * dt;
-  });
+  fluid_.integrate(world, dt);
   stats_.stage_ms.emplace_back("integration", watch.lap_ms());
 }
 

@@ -12,12 +12,11 @@
 // solver); non-pressure forces are gravity and the shared viscosity.
 #pragma once
 
-#include <cstdint>
 #include <vector>
 
 #include "framework/params/param_spec.h"
 #include "framework/solver/solver.h"
-#include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/fluid_solver_state.h"
 
 namespace upf {
 
@@ -40,16 +39,10 @@ class PcisphSolver final : public Solver {
   double eta_;
   int min_iterations_, max_iterations_;
   std::vector<MaterialId> materials_;
-  FluidMaterialTable table_;
-  FluidNeighbourHandles lists_;
-  double delta_scale_ = 0;  // [kg^2/m^6 ... ] delta = delta_scale_ / dt^2 (per unit mass ratio)
-  Real max_viscosity_ = 0;
+  FluidSolverState fluid_;
+  double delta_scale_ = 0;    // delta = delta_scale_ / dt^2
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
-  std::vector<Vec3> fluid_gradient_;
-  std::vector<std::uint8_t> owns_;   // per material: moved by this solver
-  std::vector<std::uint32_t> mine_;  // indices of the particles moved, rebuilt every step  // grad
-                                     // W_ij per fluid-list slot, for the current step
 };
 
 }  // namespace upf

@@ -3,6 +3,8 @@
 // neighbour lists are ordered by cell and stable id and control-flow reductions are exact.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "scene_helpers.h"
 
 namespace upf {
@@ -21,9 +23,10 @@ void expect_identical(const testing::StateById& a, const testing::StateById& b) 
       << "particles whose position or velocity differ in some bit";
 }
 
-nlohmann::json small_dam_break() {
+nlohmann::json small_dam_break(const std::string& solver = "pcisph") {
   auto doc = testing::load_sample_json("dam_break.json");
   doc["particle_spacing"] = 0.04;
+  if (solver != "pcisph") doc["materials"]["water"]["solver"] = {{"name", solver}};
   return doc;
 }
 
@@ -34,6 +37,17 @@ TEST(Determinism, OneAndTwoThreadsGiveBitwiseIdenticalPositions) {
   // The run must actually have moved: a frozen world would pass trivially.
   const auto start = run_steps(small_dam_break(), 1, 0);
   EXPECT_GT(testing::bitwise_differences(one, start, true), 1000u);
+}
+
+// SPH and WCSPH share PCISPH's reductions (compression_stats.h) and gather-only loops.
+TEST(Determinism, StateEquationSolversGiveBitwiseIdenticalPositions) {
+  for (const std::string solver : {"sph", "wcsph"}) {
+    SCOPED_TRACE(solver);
+    const auto one = run_steps(small_dam_break(solver), 1, 100);
+    expect_identical(one, run_steps(small_dam_break(solver), 2, 100));
+    const auto start = run_steps(small_dam_break(solver), 1, 0);
+    EXPECT_GT(testing::bitwise_differences(one, start, true), 1000u);
+  }
 }
 
 TEST(Determinism, ReorderingParticlesChangesNoBit) {

@@ -1,0 +1,39 @@
+// The liquid particles one fluid solver moves, as an index list rebuilt every step (reordering
+// for locality moves them). Loops over the list split evenly between threads; a static split of
+// all particles did not: walls and water sit in different parts of the Morton order, and one
+// thread waited for the other.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "framework/executors/cpu/cpu_executor.h"
+#include "framework/particles/particles.h"
+
+namespace upf {
+
+class OwnedParticles {
+ public:
+  // Owns the liquid particles of `materials`, out of `material_count` materials in the world.
+  void set_materials(std::size_t material_count, const std::vector<MaterialId>& materials);
+  // Collects the owned particles in index order.
+  void rebuild(const Particles& particles);
+
+  std::size_t size() const { return indices_.size(); }
+  bool empty() const { return indices_.empty(); }
+  std::uint32_t operator[](std::size_t k) const { return indices_[k]; }
+
+  // Runs body(i) for every owned particle index i, in parallel.
+  template <class Body>
+  void for_each(const CpuExecutor& exec, Body&& body) const {
+    const std::uint32_t* mine = indices_.data();
+    exec.for_each(indices_.size(), [&](std::size_t k) { body(mine[k]); });
+  }
+
+ private:
+  std::vector<std::uint8_t> owns_;      // per material: moved by this solver
+  std::vector<std::uint32_t> indices_;  // the particles moved, for the current step
+};
+
+}  // namespace upf

@@ -1,0 +1,108 @@
+#include "solvers/sph/sph_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "framework/world/world.h"
+#include "solvers/fluid/fluid_time_step.h"
+#include "solvers/fluid/lattice_template.h"
+#include "solvers/fluid/sound_speed.h"
+#include "solvers/sph/sph_kernel_sets.h"
+#include "solvers/sph/sph_kernels.h"
+
+namespace upf {
+
+std::vector<ParamSpec> SphSolver::param_specs() {
+  return {
+      {"stiffness", "m^2/s^2", 0, 0, 1e7,
+       "k in p = k (rho - rho0), the step obeys CFL on sqrt(k); 0: 2 c^2 with c = 10 sqrt(2 g H), "
+       "H the height of the initial liquid: WCSPH's automatic speed of sound, doubled in k since "
+       "the paper's pressure force is half the pressure gradient (density varies about 1 %)"},
+      {"viscosity", "Pa s", 0, 0, 1e4,
+       "dynamic viscosity mu of the paper's viscosity force, added to the material's shared "
+       "viscosity (0: only the shared one, so comparisons isolate the pressure solver)"},
+      {"cubic_spline", "1", 1, 0, 1,
+       "1: the cubic spline for density, pressure and viscosity; 0: the paper's kernels (poly6, "
+       "spiky, viscosity), which need viscosity of about 20 Pa s to stay stable",
+       true},
+  };
+}
+
+SphSolver::SphSolver(const ParamValues& params, std::vector<MaterialId> materials)
+    : EquationOfStateSolver(std::move(materials)),
+      requested_stiffness_(Real(params.get("stiffness"))),
+      mu_(Real(params.get("viscosity"))),
+      cubic_spline_(params.get("cubic_spline") != 0) {}
+
+Real SphSolver::poly6_lattice_scale(Real spacing, Real support_radius) {
+  const MullerKernels w(support_radius);
+  double sum = 0;
+  for_each_lattice_offset(spacing, support_radius,
+                          [&](const Vec3& r) { sum += double(w.poly6(norm(r))); });
+  const double volume = double(spacing) * spacing * spacing;
+  return Real(1.0 / (volume * sum));
+}
+
+void SphSolver::prepare_method(World& world) {
+  if (requested_stiffness_ > 0) {
+    stiffness_ = requested_stiffness_;
+  } else {
+    const Real c = automatic_sound_speed(world, materials(), "stiffness");
+    stiffness_ = Real(2) * c * c;
+  }
+  const auto& s = world.settings();
+  poly6_scale_ = poly6_lattice_scale(s.spacing, s.support_radius());
+  const FluidMaterialTable& table = fluid().table;
+  max_viscosity_ = 0;
+  for (MaterialId m : materials())
+    max_viscosity_ = std::max(max_viscosity_, table.viscosity[m] + mu_ / table.rest_density[m]);
+}
+
+Real SphSolver::max_time_step(const World& world) const {
+  return sound_speed_time_step(world, Real(world.settings().time.cfl), std::sqrt(stiffness_),
+                               max_viscosity_);
+}
+
+template <class Visit>
+void SphSolver::with_kernels(const World& world, Visit&& visit) const {
+  const Real h = world.settings().support_radius();
+  if (cubic_spline_) {
+    visit(CubicKernelSet{CubicSplineKernel(h)}, Real(1));
+  } else {
+    visit(MullerKernelSet{MullerKernels(h)}, poly6_scale_);
+  }
+}
+
+void SphSolver::add_own_non_pressure(const World& world, const FluidView& f, Real* density) {
+  const CpuExecutor& exec = world.executor();
+  const OwnedParticles& owned = fluid().owned;
+  Vec3* a_other = fluid().other_acceleration.data();
+  with_kernels(world, [&](const auto& kernels, Real density_scale) {
+    // The spline density is already there; another kernel's replaces it once the shared viscosity
+    // has read it at every neighbour.
+    if (!cubic_spline_)
+      owned.for_each(
+          exec, [&](std::uint32_t i) { density[i] = sph_density(f, kernels, density_scale, i); });
+    if (mu_ > 0)
+      owned.for_each(exec, [&](std::uint32_t i) {
+        a_other[i] += sph_viscosity_acceleration(f, kernels, density, mu_, i);
+      });
+  });
+}
+
+void SphSolver::compute_pressure(const World& world, const FluidView& f, const Real* density,
+                                 Real* pressure) {
+  const CpuExecutor& exec = world.executor();
+  const OwnedParticles& owned = fluid().owned;
+  Vec3* a_p = fluid().pressure_acceleration.data();
+  owned.for_each(exec, [&](std::uint32_t i) {
+    pressure[i] = sph_pressure(density[i], f.rest_density[f.material[i]], stiffness_);
+  });
+  with_kernels(world, [&](const auto& kernels, Real) {
+    owned.for_each(exec, [&](std::uint32_t i) {
+      a_p[i] = sph_pressure_acceleration(f, kernels, density, pressure, i);
+    });
+  });
+}
+
+}  // namespace upf

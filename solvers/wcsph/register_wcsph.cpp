@@ -1,0 +1,22 @@
+#include "solvers/wcsph/register_wcsph.h"
+
+#include "framework/solver/registry.h"
+#include "solvers/wcsph/wcsph_solver.h"
+
+namespace upf {
+
+void register_wcsph(Registry& registry) {
+  registry.add_solver({
+      "wcsph",
+      ParticleType::Liquid,
+      "Weakly compressible SPH with the Tait equation: one pressure evaluation per step, the "
+      "step limited by a speed of sound chosen for about 1 % density variation",
+      "Becker & Teschner 2007, Weakly Compressible SPH for Free Surface Flows, SCA 2007",
+      WcsphSolver::param_specs(),
+      [](const ParamValues& values, std::vector<MaterialId> materials) {
+        return std::make_unique<WcsphSolver>(values, std::move(materials));
+      },
+  });
+}
+
+}  // namespace upf

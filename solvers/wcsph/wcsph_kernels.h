@@ -1,0 +1,60 @@
+// The per-particle functions of WCSPH (Becker & Teschner 2007, "Weakly compressible SPH for free
+// surface flows", SCA 2007), written once for host and device. Kernel gradients are the cubic
+// spline's, taken from density_and_gradients like PCISPH's.
+#pragma once
+
+#include "solvers/fluid/fluid_view.h"
+
+namespace upf {
+
+// The Tait equation (paper eq. 6, gamma = 7), clamped at zero (see wcsph_solver.h):
+//   p = B ((rho / rho0)^7 - 1),  B = rho0 c^2 / 7.
+UPF_HD inline Real tait_pressure(Real rho, Real rest_density, Real b) {
+  const Real r = rho / rest_density;
+  const Real r2 = r * r;
+  const Real p = b * (r2 * r2 * r2 * r - Real(1));
+  return p > 0 ? p : Real(0);
+}
+
+// Pressure acceleration, the paper's symmetric form (eq. 5):
+//   a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij
+//         -sum_b Psi_b (p_i / rho_i^2) grad W_ib          (Akinci et al. 2012, eq. 10)
+// `boundary_gradient` is sum_b V_b grad W_ib; Psi_b = rho0_i V_b.
+UPF_HD inline Vec3 wcsph_pressure_acceleration(const FluidView& f, const Real* density,
+                                               const Real* pressure, const Vec3* fluid_gradient,
+                                               const Vec3& boundary_gradient, std::uint32_t i) {
+  const Real rho = density[i];
+  const Real pi = pressure[i] / (rho * rho);
+  Vec3 a{};
+  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+    const std::uint32_t j = f.fluid.indices[k];
+    a -= fluid_gradient[k] * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
+  }
+  a -= boundary_gradient * (f.rest_density[f.material[i]] * pi);
+  return a;
+}
+
+// The paper's artificial viscosity (eq. 11), acting only between approaching particles:
+//   a_i = -sum_j m_j Pi_ij grad W_ij,
+//   Pi_ij = -nu min(v_ij . x_ij, 0) / (|x_ij|^2 + 0.01 h^2),  nu = 2 alpha h c / (rho_i + rho_j),
+// with h the smoothing length, H / 2. `two_alpha_h_c` = 2 alpha h c.
+UPF_HD inline Vec3 artificial_viscosity_acceleration(const FluidView& f, const Real* density,
+                                                     const Vec3* fluid_gradient, Real two_alpha_h_c,
+                                                     std::uint32_t i) {
+  const Real h = Real(0.5) * f.kernel.support_radius();
+  const Vec3 xi = f.x[i];
+  const Vec3 vi = f.v[i];
+  Vec3 a{};
+  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+    const std::uint32_t j = f.fluid.indices[k];
+    const Vec3 xij = xi - f.x[j];
+    const Real vx = dot(vi - f.v[j], xij);
+    if (vx >= 0) continue;
+    const Real nu = two_alpha_h_c / (density[i] + density[j]);
+    const Real pi_ij = -nu * vx / (squared_norm(xij) + Real(0.01) * h * h);
+    a -= fluid_gradient[k] * (f.mass[j] * pi_ij);
+  }
+  return a;
+}
+
+}  // namespace upf
