@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/core/deterministic_sum.h"
 #include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
+#include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_time_step.h"
 
@@ -77,8 +77,7 @@ void PbfSolver::prepare(World& world) {
   p.vector_field("pbf.vorticity");
   lists_.request(world);
   table_.load(world);
-  owns_.assign(world.materials().size(), 0);
-  for (MaterialId m : materials_) owns_[m] = 1;
+  owned_.set_materials(world.materials().size(), materials_);
   max_viscosity_ = 0;
   for (MaterialId m : materials_) max_viscosity_ = std::max(max_viscosity_, table_.viscosity[m]);
   reference_speed_ = free_fall_speed(world);
@@ -100,8 +99,7 @@ Real PbfSolver::max_time_step(const World& world) const {
 
 template <class Body>
 void PbfSolver::for_mine(const World& world, Body&& body) const {
-  const std::uint32_t* mine = mine_.data();
-  world.executor().for_each(mine_.size(), [&](std::size_t k) { body(mine[k]); });
+  owned_.for_each(world.executor(), body);
 }
 
 void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
@@ -153,25 +151,11 @@ void PbfSolver::solve_constraints(World& world, const FluidView& f, Real dt) {
     for_mine(world, [&](std::uint32_t i) { xs[i] += dx[i]; });
   }
 
-  // The density error of the last iteration, defined as PCISPH defines it: the mean over the
-  // particles moved of max(0, (rho - rho0)/rho0), summed in fixed point (the same bits for any
-  // thread count), and the largest.
-  auto relative_error = [&](std::uint32_t i) {
-    const Real rho0 = f.rest_density[f.material[i]];
-    return (rho[i] - rho0) / rho0;
-  };
-  const CpuExecutor& exec = world.executor();
-  const std::uint32_t* mine = mine_.data();
-  const double error_sum = fixed_point_sum(exec, mine_.size(), [&](std::size_t k) {
-    return std::max(0.0, double(relative_error(mine[k])));
-  });
+  // The density error of the last iteration, defined as for every fluid solver
+  // (solvers/fluid/compression_stats.h).
   stats_.iterations = iterations_;
-  stats_.avg_density_error = mine_.empty() ? 0.0 : error_sum / double(mine_.size());
-  Real max_error = 0;
-  const std::int64_t count = std::int64_t(mine_.size());
-#pragma omp parallel for schedule(static) reduction(max : max_error) num_threads(exec.threads())
-  for (std::int64_t k = 0; k < count; ++k) max_error = std::max(max_error, relative_error(mine[k]));
-  stats_.max_density_error = double(max_error);
+  stats_.avg_density_error = average_compression(world.executor(), owned_, f, rho);
+  stats_.max_density_error = max_compression(world.executor(), owned_, f, rho);
 }
 
 void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
@@ -205,10 +189,7 @@ void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
 void PbfSolver::step(World& world, Real dt) {
   const Particles& p = world.particles();
   const FluidView f = make_fluid_view(world, table_, lists_);
-  mine_.clear();
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.type[i] == ParticleType::Liquid && owns_[p.material[i]])
-      mine_.push_back(std::uint32_t(i));
+  owned_.rebuild(p);
 
   Stopwatch watch;
   stats_ = SolverStats{};

@@ -42,6 +42,7 @@
 #include "framework/solver/solver.h"
 #include "pbf_kernels.h"
 #include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/owned_particles.h"
 
 namespace upf::pbf {
 
@@ -82,8 +83,7 @@ class PbfSolver final : public Solver {
   std::vector<Vec3> fluid_gradient_;  // grad W_ij per fluid-list slot at x, for the viscosity
   std::vector<Vec3> pair_gradient_;   // grad W_ij per fluid-list slot at x*, for one iteration
   std::vector<Real> pair_tensile_;    // s_corr per fluid-list slot at x*, for one iteration
-  std::vector<std::uint8_t> owns_;    // per material: moved by this solver
-  std::vector<std::uint32_t> mine_;   // indices of the particles moved, rebuilt every step
+  OwnedParticles owned_;              // the particles moved, rebuilt every step
 };
 
 }  // namespace upf::pbf
