@@ -3,10 +3,13 @@
 #include "framework/output/pvd_series.h"
 
 #include <charconv>
+#include <cstddef>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include "framework/output/atomic_file.h"
 #include "framework/output/vtp_writer.h"  // xml_escape
@@ -27,12 +30,22 @@ std::string format_time(double t) {
 PvdSeries::PvdSeries(std::filesystem::path pvd_path) : path_(std::move(pvd_path)) {}
 
 void PvdSeries::add(double time, const std::string& relative_file) {
-  entries_.push_back({time, relative_file});
+  add(time, std::vector<std::string>{relative_file});
+}
+
+void PvdSeries::add(double time, const std::vector<std::string>& relative_files) {
+  if (relative_files.empty()) {
+    throw std::invalid_argument("PvdSeries::add: a time step needs at least one file");
+  }
+  const std::size_t before = entries_.size();
+  for (std::size_t part = 0; part < relative_files.size(); ++part) {
+    entries_.push_back({time, part, relative_files[part]});
+  }
   try {
     write();
   } catch (...) {
-    // Keep memory and disk in agreement: the caller sees the failure and the entry is not kept.
-    entries_.pop_back();
+    // Keep memory and disk in agreement: the caller sees the failure and the step is not kept.
+    entries_.resize(before);
     throw;
   }
 }
@@ -43,8 +56,8 @@ void PvdSeries::write() const {
   xml += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
   xml += "  <Collection>\n";
   for (const Entry& e : entries_) {
-    xml += "    <DataSet timestep=\"" + format_time(e.time) + "\" group=\"\" part=\"0\" file=\"" +
-           xml_escape(e.file) + "\"/>\n";
+    xml += "    <DataSet timestep=\"" + format_time(e.time) + "\" group=\"\" part=\"" +
+           std::to_string(e.part) + "\" file=\"" + xml_escape(e.file) + "\"/>\n";
   }
   xml += "  </Collection>\n";
   xml += "</VTKFile>\n";

@@ -4,13 +4,10 @@
 // https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <map>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -22,156 +19,26 @@
 #include "framework/output/pvd_series.h"
 #include "framework/output/vtp_writer.h"
 #include "framework/particles/particles.h"
+#include "tests/unit/test_output_support.h"
 
 namespace upf {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void write_text(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
-
-// Each test gets its own directory, so tests may run in parallel processes (ctest -j).
-class TempDirTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() / ("upf_" + std::string(info->test_suite_name()) + "_" +
-                                        info->name() + "_" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  fs::path dir_;
-};
+using output_test::ArrayInfo;
+using output_test::attributes;
+using output_test::elements;
+using output_test::output_error_message;
+using output_test::parse_vtp;
+using output_test::read_all;
+using output_test::TempDirTest;
+using output_test::unclosed_elements;
+using output_test::VtpFile;
+using output_test::write_text;
 
 class AtomicFileTest : public TempDirTest {};
 class VtpWriterTest : public TempDirTest {};
 class PvdSeriesTest : public TempDirTest {};
-
-// Runs `f`, expects an OutputError and returns its message.
-template <class F>
-std::string output_error_message(F&& f) {
-  try {
-    f();
-  } catch (const OutputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected OutputError";
-  return {};
-}
-
-// ---------------------------------------------------------------------------------------------
-// A minimal reader for what write_vtp produces.
-
-struct ArrayInfo {
-  std::string name;
-  std::string type;
-  int components = 1;
-  std::uint64_t offset = 0;
-};
-
-struct VtpFile {
-  std::string xml;  // everything before the appended data
-  std::map<std::string, std::string> piece;
-  std::vector<ArrayInfo> arrays;
-  std::string raw;  // the appended block, from the byte after '_'
-
-  // Decodes one array: UInt64 byte count, then the values.
-  template <class T>
-  std::vector<T> decode(const std::string& name) const {
-    for (const ArrayInfo& a : arrays) {
-      if (a.name != name) continue;
-      std::uint64_t bytes = 0;
-      EXPECT_LE(a.offset + sizeof(bytes), raw.size());
-      std::memcpy(&bytes, raw.data() + a.offset, sizeof(bytes));
-      EXPECT_EQ(bytes % sizeof(T), 0u);
-      EXPECT_LE(a.offset + sizeof(bytes) + bytes, raw.size());
-      std::vector<T> values(bytes / sizeof(T));
-      if (bytes > 0) std::memcpy(values.data(), raw.data() + a.offset + sizeof(bytes), bytes);
-      return values;
-    }
-    ADD_FAILURE() << "no array named " << name;
-    return {};
-  }
-  const ArrayInfo* find(const std::string& name) const {
-    for (const ArrayInfo& a : arrays)
-      if (a.name == name) return &a;
-    return nullptr;
-  }
-};
-
-// The name="value" pairs of one start tag. Hand-written rather than std::regex, whose GCC 12
-// implementation trips -Wmaybe-uninitialized in optimised sanitizer builds.
-std::map<std::string, std::string> attributes(const std::string& element) {
-  std::map<std::string, std::string> attrs;
-  std::size_t pos = 0;
-  while ((pos = element.find("=\"", pos)) != std::string::npos) {
-    const std::size_t name_begin = element.find_last_of(" \t\n", pos) + 1;
-    const std::size_t value_end = element.find('"', pos + 2);
-    if (value_end == std::string::npos) break;
-    attrs[element.substr(name_begin, pos - name_begin)] =
-        element.substr(pos + 2, value_end - pos - 2);
-    pos = value_end + 1;
-  }
-  return attrs;
-}
-
-// Every start tag in `text` that begins with `open` (for example "<DataArray"), up to its '>'.
-std::vector<std::string> elements(const std::string& text, const std::string& open) {
-  std::vector<std::string> found;
-  for (std::size_t pos = text.find(open); pos != std::string::npos;
-       pos = text.find(open, pos + 1)) {
-    found.push_back(text.substr(pos, text.find('>', pos) + 1 - pos));
-  }
-  return found;
-}
-
-VtpFile parse_vtp(const fs::path& p) {
-  const std::string text = read_all(p);
-  VtpFile f;
-  const std::string marker = "<AppendedData encoding=\"raw\">";
-  const std::size_t appended = text.find(marker);
-  EXPECT_NE(appended, std::string::npos);
-  if (appended == std::string::npos) return f;
-  const std::size_t underscore = text.find('_', appended + marker.size());
-  EXPECT_NE(underscore, std::string::npos);
-  // Only whitespace may stand between the element and the '_'.
-  EXPECT_EQ(text.find_first_not_of(" \n", appended + marker.size()), underscore);
-  f.xml = text.substr(0, appended);
-  f.raw = text.substr(underscore + 1);
-
-  const std::string vtkfile = f.xml.substr(f.xml.find("<VTKFile"));
-  const auto head = attributes(vtkfile.substr(0, vtkfile.find('>')));
-  EXPECT_EQ(head.at("type"), "PolyData");
-  EXPECT_EQ(head.at("byte_order"), "LittleEndian");
-  EXPECT_EQ(head.at("header_type"), "UInt64");
-
-  const std::size_t piece = f.xml.find("<Piece");
-  f.piece = attributes(f.xml.substr(piece, f.xml.find('>', piece) - piece));
-
-  for (const std::string& element : elements(f.xml, "<DataArray")) {
-    auto a = attributes(element);
-    EXPECT_EQ(a["format"], "appended");
-    ArrayInfo info;
-    info.name = a["Name"];
-    info.type = a["type"];
-    if (a.count("NumberOfComponents")) info.components = std::stoi(a["NumberOfComponents"]);
-    info.offset = std::stoull(a["offset"]);
-    f.arrays.push_back(info);
-  }
-  return f;
-}
 
 constexpr const char* kRealName = std::is_same_v<Real, double> ? "Float64" : "Float32";
 
@@ -319,6 +186,9 @@ TEST_F(VtpWriterTest, RoundTripsArraysExactly) {
   const ArrayInfo& last = f.arrays.back();
   const std::size_t end = last.offset + sizeof(std::uint64_t) + 3 * sizeof(std::int64_t);
   EXPECT_EQ(f.raw.substr(end), "\n  </AppendedData>\n</VTKFile>\n");
+  // Everything but the two elements closed in that tail is closed, in order, before the data.
+  EXPECT_EQ(unclosed_elements(f.xml + "<AppendedData encoding=\"raw\">"),
+            (std::vector<std::string>{"VTKFile", "AppendedData"}));
 }
 
 TEST_F(VtpWriterTest, IdsFollowParticlesAfterReordering) {
@@ -404,6 +274,62 @@ TEST_F(PvdSeriesTest, UnwritableSeriesThrowsNamingPath) {
   PvdSeries series(pvd);
   const std::string msg = output_error_message([&] { series.add(0.0, "f.vtp"); });
   EXPECT_NE(msg.find(pvd.string()), std::string::npos) << msg;
+}
+
+TEST_F(PvdSeriesTest, SingleFileStepIsPartZeroInTheFixedLayout) {
+  const fs::path pvd = dir_ / "run.pvd";
+  PvdSeries series(pvd);
+  series.add(0.25, "frames/frame_000000.vtp");
+  EXPECT_EQ(read_all(pvd),
+            "<?xml version=\"1.0\"?>\n"
+            "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "  <Collection>\n"
+            "    <DataSet timestep=\"0.25\" group=\"\" part=\"0\" "
+            "file=\"frames/frame_000000.vtp\"/>\n"
+            "  </Collection>\n"
+            "</VTKFile>\n");
+}
+
+struct DataSetEntry {
+  double time;
+  std::string part;
+  std::string file;
+  bool operator==(const DataSetEntry&) const = default;
+};
+
+std::vector<DataSetEntry> data_sets(const fs::path& pvd) {
+  std::vector<DataSetEntry> entries;
+  for (const std::string& element : elements(read_all(pvd), "<DataSet")) {
+    auto a = attributes(element);
+    entries.push_back({std::stod(a["timestep"]), a["part"], a["file"]});
+  }
+  return entries;
+}
+
+TEST_F(PvdSeriesTest, MultiFileStepsNumberTheirParts) {
+  const fs::path pvd = dir_ / "run.pvd";
+  PvdSeries series(pvd);
+  series.add(0.0, {"frames/frame_000000.vtp", "frames/bodies_000000.vtp"});
+  series.add(0.5, std::vector<std::string>{"frames/frame_000001.vtp", "frames/bodies_000001.vtp"});
+  series.add(1.0, {"frames/frame_000002.vtp"});
+  const std::vector<DataSetEntry> expected = {
+      {0.0, "0", "frames/frame_000000.vtp"}, {0.0, "1", "frames/bodies_000000.vtp"},
+      {0.5, "0", "frames/frame_000001.vtp"}, {0.5, "1", "frames/bodies_000001.vtp"},
+      {1.0, "0", "frames/frame_000002.vtp"},
+  };
+  EXPECT_EQ(data_sets(pvd), expected);
+  EXPECT_THROW(series.add(2.0, std::vector<std::string>{}), std::invalid_argument);
+  EXPECT_EQ(data_sets(pvd), expected);
+}
+
+TEST_F(PvdSeriesTest, FailedMultiFileStepIsNotRecorded) {
+  const fs::path pvd = dir_ / "later" / "run.pvd";
+  PvdSeries series(pvd);
+  output_error_message([&] { series.add(0.0, {"a_0.vtp", "b_0.vtp"}); });
+  fs::create_directory(dir_ / "later");
+  series.add(0.5, {"a_1.vtp", "b_1.vtp"});
+  EXPECT_EQ(data_sets(pvd),
+            (std::vector<DataSetEntry>{{0.5, "0", "a_1.vtp"}, {0.5, "1", "b_1.vtp"}}));
 }
 
 }  // namespace

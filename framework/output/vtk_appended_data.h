@@ -1,0 +1,56 @@
+// Internal to the .vtp writers (write_vtp, write_mesh_vtp): one VTK XML PolyData file whose
+// arrays sit in a raw appended binary block. Format: VTK XML file format documentation,
+// https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html (PolyData, appended
+// data, header_type).
+//
+// Layout: the XML header lists every DataArray with format="appended" and an offset into the
+// <AppendedData encoding="raw"> block, which starts after a '_' and holds, per array, a UInt64
+// byte count followed by the array's bytes in the file's byte order.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace upf::vtk_xml {
+
+using Header = std::uint64_t;  // header_type="UInt64": no 4 GiB limit per array.
+
+// One DataArray, written straight from memory: `data` must outlive the write and hold `bytes`
+// bytes laid out as `type` (a VTK type name such as "Float64") with `components` per tuple.
+struct Array {
+  std::string name;
+  const char* type;
+  int components;
+  const void* data;
+  std::size_t bytes;
+};
+
+template <class T>
+Array make_array(std::string name, const char* type, int components, const std::vector<T>& v) {
+  return {std::move(name), type, components, v.data(), v.size() * sizeof(T)};
+}
+
+// A child element of the <Piece> ("PointData", "CellData", "Points", "Verts", "Polys") and the
+// arrays it holds, in file order.
+struct Section {
+  const char* tag;
+  std::vector<Array> arrays;
+};
+
+// The sizes declared on the <Piece>; lines and strips are never written.
+struct PieceCounts {
+  std::size_t points = 0;
+  std::size_t verts = 0;
+  std::size_t polys = 0;
+};
+
+// Writes a PolyData file with one <Piece> holding `sections` to `path` atomically (see
+// write_file_atomically). Throws OutputError if the file cannot be written.
+void write_polydata(const std::filesystem::path& path, const PieceCounts& counts,
+                    const std::vector<Section>& sections);
+
+}  // namespace upf::vtk_xml
