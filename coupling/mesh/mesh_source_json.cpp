@@ -15,8 +15,10 @@ std::optional<Eigen::Vector3d> read_scale(JsonInput& input, const nlohmann::json
   return input.vec3(node, path, "scale", true);
 }
 
-std::optional<Eigen::Quaterniond> read_rotation(JsonInput& input, const nlohmann::json& node,
-                                                const std::string& path) {
+}  // namespace
+
+std::optional<Eigen::Quaterniond> read_rotation(const nlohmann::json& node, const std::string& path,
+                                                JsonInput& input) {
   auto it = node.find("rotation");
   if (it == node.end()) return Eigen::Quaterniond::Identity();
   const std::string where = JsonInput::child(path, "rotation");
@@ -31,8 +33,6 @@ std::optional<Eigen::Quaterniond> read_rotation(JsonInput& input, const nlohmann
   }
   return rotation_from_axis_angle_degrees(*axis, *degrees);
 }
-
-}  // namespace
 
 std::optional<MeshSource> read_mesh_source(const nlohmann::json& node, const std::string& path,
                                            const std::filesystem::path& base_directory,
@@ -62,7 +62,7 @@ std::optional<MeshSource> read_mesh_source(const nlohmann::json& node, const std
     input.problem(JsonInput::child(path, "scale"), "scale factors must be finite and non-zero");
     ok = false;
   }
-  const auto rotation = read_rotation(input, node, path);
+  const auto rotation = read_rotation(node, path, input);
   const auto position = input.vec3(node, path, "position", false);
   if (!ok || !scale || !rotation || (node.contains("position") && !position)) return std::nullopt;
   out.transform.scale = *scale;

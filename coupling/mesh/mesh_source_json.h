@@ -27,4 +27,11 @@ std::optional<MeshSource> read_mesh_source(const nlohmann::json& node, const std
                                            const std::filesystem::path& base_directory,
                                            JsonInput& input);
 
+// The optional "rotation": { "axis": [x, y, z], "degrees": d } of the object `node` at `path`
+// (right-hand rule, any non-zero axis length); absent: the identity. Shared by everything that
+// places or moves a mesh, so that a rotation reads the same everywhere. Problems go to `input`
+// under path/rotation (and the result is empty).
+std::optional<Eigen::Quaterniond> read_rotation(const nlohmann::json& node, const std::string& path,
+                                                JsonInput& input);
+
 }  // namespace upf
