@@ -1,5 +1,7 @@
 #include "app_registry.h"
 
+#include "coupling/bodies/bodies_section.h"
+
 #include "solvers/register_builtin_solvers.h"
 
 namespace upf::app {
@@ -7,6 +9,7 @@ namespace upf::app {
 Registry make_app_registry() {
   Registry registry;
   register_builtins(registry);
+  register_coupling(registry);
   register_extensions(registry);
   return registry;
 }

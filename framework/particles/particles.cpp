@@ -72,6 +72,11 @@ const std::vector<Vec3>* Particles::find_vector(const std::string& name) const {
   return it == vectors_.end() ? nullptr : &it->second.values;
 }
 
+std::vector<Vec3>* Particles::find_vector(const std::string& name) {
+  auto it = vectors_.find(name);
+  return it == vectors_.end() ? nullptr : &it->second.values;
+}
+
 void Particles::permute(const std::vector<std::uint32_t>& order) {
   apply_order(position, order, permute_scratch_);
   apply_order(velocity, order, permute_scratch_);

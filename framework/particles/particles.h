@@ -54,6 +54,7 @@ class Particles {
   std::vector<Vec3>& vector_field(const std::string& name, Vec3 init = {}, bool exported = false);
   const std::vector<Real>* find_scalar(const std::string& name) const;
   const std::vector<Vec3>* find_vector(const std::string& name) const;
+  std::vector<Vec3>* find_vector(const std::string& name);
   const std::map<std::string, Field<Real>>& scalar_fields() const { return scalars_; }
   const std::map<std::string, Field<Vec3>>& vector_fields() const { return vectors_; }
 

@@ -54,23 +54,28 @@ std::vector<std::string> check_output_fields(const SceneDescription& scene,
 class FrameWriter {
  public:
   FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
-              std::vector<std::string> fields, bool enabled)
+              std::vector<std::string> fields, bool enabled, World& world)
       : out_dir_(out_dir),
         fields_(std::move(fields)),
         enabled_(enabled && scene.output.vtp),
-        series_(out_dir / "particles.pvd") {
+        series_(out_dir / "particles.pvd"),
+        world_(world) {
     if (enabled_) ensure_directory(out_dir / "frames");
+    for (auto& b : world_.body_systems()) b->open_outputs(out_dir, enabled_);
   }
 
+  // Body systems add their own files (body meshes) as further parts of the frame.
   void write(const Particles& particles, double time) {
-    if (!enabled_) {
-      ++frames_;
-      return;
+    std::vector<std::string> files;
+    if (enabled_) {
+      char name[64];
+      std::snprintf(name, sizeof name, "frames/frame_%05d.vtp", frames_);
+      write_vtp(out_dir_ / name, particles, fields_);
+      files.push_back(name);
     }
-    char name[64];
-    std::snprintf(name, sizeof name, "frames/frame_%05d.vtp", frames_);
-    write_vtp(out_dir_ / name, particles, fields_);
-    series_.add(time, name);
+    for (auto& b : world_.body_systems())
+      for (auto& f : b->write_frame(out_dir_, frames_, time)) files.push_back(std::move(f));
+    if (enabled_) series_.add(time, files);
     ++frames_;
   }
   int frames() const { return frames_; }
@@ -80,6 +85,7 @@ class FrameWriter {
   std::vector<std::string> fields_;
   bool enabled_;
   PvdSeries series_;
+  World& world_;
   int frames_ = 0;
 };
 
@@ -133,7 +139,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   result.total_particles = particles.size();
   result.threads = world->executor().threads();
 
-  FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames);
+  FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames, *world);
   MetricsLog metrics(options.out_dir / "metrics.csv");
   std::vector<std::string> probe_names;
   for (const auto& p : scene.probes) probe_names.push_back(p.name);

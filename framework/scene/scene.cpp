@@ -52,6 +52,8 @@ double SceneDescription::estimated_particles() const {
   const double h = world.spacing;
   for (const auto& c : containers) total += wall_particle_estimate(c.box, h, c.layers);
   for (const auto& b : fluid_blocks) total += fluid_particle_estimate(b.box, h);
+  for (const auto& s : sections)
+    if (s.data) total += s.data->estimated_particles();
   return total;
 }
 

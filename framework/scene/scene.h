@@ -11,6 +11,7 @@
 
 #include "framework/materials/material.h"
 #include "framework/params/param_spec.h"
+#include "framework/scene/scene_section.h"
 #include "framework/world/world_settings.h"
 
 namespace upf {
@@ -63,6 +64,7 @@ struct SceneDescription {
   std::vector<FluidBlockDesc> fluid_blocks;
   std::vector<ProbeDesc> probes;
   OutputDesc output;
+  std::vector<SceneSectionEntry> sections;  // plug-in keys ("bodies"), in registry order
 
   // In double: a huge box at a tiny spacing must give a huge number, not an overflow.
   double estimated_particles() const;

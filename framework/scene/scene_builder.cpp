@@ -68,6 +68,9 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
     add_fluid_block(p, b.box, h, to_vec3(b.velocity), mass, id);
   }
 
+  for (const auto& section : scene.sections)
+    registry.find_scene_section(section.key)->build(*world, scene, *section.data);
+
   // One solver instance per name, moving every material that names it.
   std::map<std::string, std::vector<MaterialId>> by_solver;
   for (std::size_t i = 0; i < scene.materials.size(); ++i)

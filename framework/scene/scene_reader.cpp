@@ -220,7 +220,9 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
     throw InputError(std::move(problems));
   };
   if (!in.expect_object(doc, "")) fail_if_any();
-  in.check_keys(doc, "", kTopKeys);
+  std::vector<std::string> top_keys = kTopKeys;
+  for (const auto& section : registry.scene_sections()) top_keys.push_back(section.key);
+  in.check_keys(doc, "", top_keys);
 
   scene.name =
       in.string(doc, "", "name", false).value_or(std::filesystem::path(source).stem().string());
@@ -355,6 +357,14 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
         }
       }
     }
+  }
+
+  // Plug-in sections ("bodies"), once materials, spacing and containers are known.
+  for (const auto& section : registry.scene_sections()) {
+    auto it = doc.find(section.key);
+    if (it == doc.end()) continue;
+    auto data = section.read(*it, "/" + section.key, scene, in);
+    if (data) scene.sections.push_back({section.key, std::move(data)});
   }
 
   // Probes.

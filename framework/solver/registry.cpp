@@ -15,6 +15,18 @@ void Registry::add_material_kind(MaterialKind kind) {
   kinds_.push_back(std::move(kind));
 }
 
+void Registry::add_scene_section(SceneSection section) {
+  if (find_scene_section(section.key))
+    throw std::logic_error("scene section '" + section.key + "' registered twice");
+  sections_.push_back(std::move(section));
+}
+
+const SceneSection* Registry::find_scene_section(const std::string& key) const {
+  for (const auto& s : sections_)
+    if (s.key == key) return &s;
+  return nullptr;
+}
+
 const SolverInfo* Registry::find_solver(const std::string& name) const {
   for (const auto& s : solvers_)
     if (s.name == name) return &s;

@@ -1,6 +1,6 @@
-// The registry: solvers and material kinds by name. An application builds one, registers the
-// built-in pieces and any plug-ins, and hands it to scene loading. No global registry exists:
-// several registries (and worlds) can live in one process.
+// The registry: solvers, material kinds and scene-file sections by name. An application builds one,
+// registers the built-in pieces and any plug-ins, and hands it to scene loading. No global registry
+// exists: several registries (and worlds) can live in one process.
 #pragma once
 
 #include <functional>
@@ -10,6 +10,7 @@
 
 #include "framework/materials/material.h"
 #include "framework/params/param_spec.h"
+#include "framework/scene/scene_section.h"
 #include "framework/solver/solver.h"
 
 namespace upf {
@@ -30,15 +31,19 @@ class Registry {
  public:
   void add_solver(SolverInfo info);
   void add_material_kind(MaterialKind kind);
+  void add_scene_section(SceneSection section);
 
   const SolverInfo* find_solver(const std::string& name) const;
   const MaterialKind* find_material_kind(const std::string& name) const;
   const std::vector<SolverInfo>& solvers() const { return solvers_; }
   const std::vector<MaterialKind>& material_kinds() const { return kinds_; }
+  const SceneSection* find_scene_section(const std::string& key) const;
+  const std::vector<SceneSection>& scene_sections() const { return sections_; }
 
  private:
   std::vector<SolverInfo> solvers_;
   std::vector<MaterialKind> kinds_;
+  std::vector<SceneSection> sections_;
 };
 
 }  // namespace upf

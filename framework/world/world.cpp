@@ -18,6 +18,10 @@ void World::add_solver(std::unique_ptr<Solver> solver) {
   solvers_.push_back(std::move(solver));
 }
 
+void World::add_body_system(std::unique_ptr<BodySystem> system) {
+  bodies_.push_back(std::move(system));
+}
+
 int World::request_neighbours(TypeMask query, TypeMask target) {
   for (std::size_t i = 0; i < lists_.size(); ++i)
     if (lists_[i].query == query && lists_[i].target == target) return int(i);
@@ -31,13 +35,15 @@ int World::request_neighbours(TypeMask query, TypeMask target) {
 }
 
 void World::prepare() {
-  // Frozen particles never move, so their volumes are computed once, here.
+  // Frozen particles keep their shape, so their volumes are computed once, here. Particles of a
+  // body (static, kinematic or rigid) see only their own body: that body system sets them.
   grid_.build(particles_, executor_);
   NeighbourList frozen;
   const TypeMask frozen_mask = mask_of(ParticleType::Frozen);
   grid_.find_neighbours(particles_, frozen_mask, frozen_mask, settings_.support_radius(), executor_,
                         frozen);
   compute_boundary_volumes(particles_, frozen_mask, frozen, kernel(), executor_);
+  for (auto& b : bodies_) b->prepare(*this);
 
   for (auto& s : solvers_) s->prepare(*this);
   prepared_ = true;
@@ -49,6 +55,7 @@ double World::next_time_step() const {
   if (t.fixed_dt > 0) return t.fixed_dt;
   double dt = t.dt_max;
   for (const auto& s : solvers_) dt = std::min(dt, double(s->max_time_step(*this)));
+  for (const auto& b : bodies_) dt = std::min(dt, b->max_time_step(*this));
   return std::clamp(dt, t.dt_min, t.dt_max);
 }
 
@@ -83,6 +90,8 @@ void World::step(double dt) {
   Stopwatch total;
   particles_.snapshot_into(last_good_);
 
+  for (auto& b : bodies_) b->place_particles(*this, dt);
+
   Stopwatch neighbours;
   // Reordering by the grid's (cell, id) order keeps neighbours close in memory. Lists depend on
   // positions and ids only, so the results are the same bits with or without it.
@@ -95,6 +104,10 @@ void World::step(double dt) {
   report_.dt = dt;
   report_.neighbour_ms = neighbours.elapsed_ms();
 
+  if (std::vector<Vec3>* reactions = particles_.find_vector(kBoundaryForceField)) {
+    Vec3* f = reactions->data();
+    executor_.for_each(reactions->size(), [&](std::size_t i) { f[i] = Vec3{}; });
+  }
   for (auto& s : solvers_) {
     s->step(*this, Real(dt));
     const SolverStats st = s->stats();
@@ -106,6 +119,9 @@ void World::step(double dt) {
     report_.solver.stage_ms.insert(report_.solver.stage_ms.end(), st.stage_ms.begin(),
                                    st.stage_ms.end());
   }
+  Stopwatch body_watch;
+  for (auto& b : bodies_) b->advance(*this, dt);
+  if (!bodies_.empty()) report_.solver.stage_ms.emplace_back("bodies", body_watch.elapsed_ms());
   time_ += dt;
   ++step_count_;
   report_.total_ms = total.elapsed_ms();

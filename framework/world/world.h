@@ -1,10 +1,10 @@
 // The world: particles, materials, the neighbour grid and the solvers, stepped together.
 //
 // World::step(dt) (DESIGN.md, "One step"):
-//   1 (rigid particles follow their bodies: with the rigid-body issue)
+//   1 body systems place their particles (rigid particles follow their bodies)
 //   2 neighbour grid update and the neighbour lists solvers asked for; reorder every K steps
-//   3 each solver advances its own particles
-//   4 (per-body force sums to Bullet: with the rigid-body issue)
+//   3 the boundary reaction field is zeroed, then each solver advances its own particles
+//   4 body systems sum the reactions per body and step their bodies (body_system.h)
 //   5 time += dt; stability check (NaN, runaway speed)
 #pragma once
 
@@ -18,6 +18,7 @@
 #include "framework/neighbours/neighbour_grid.h"
 #include "framework/particles/particles.h"
 #include "framework/solver/solver.h"
+#include "framework/world/body_system.h"
 #include "framework/world/world_settings.h"
 
 namespace upf {
@@ -44,6 +45,8 @@ class World {
 
   void add_solver(std::unique_ptr<Solver> solver);
   const std::vector<std::unique_ptr<Solver>>& solvers() const { return solvers_; }
+  void add_body_system(std::unique_ptr<BodySystem> system);
+  const std::vector<std::unique_ptr<BodySystem>>& body_systems() const { return bodies_; }
 
   // Asks for neighbour lists (query types -> target types within the support radius), rebuilt
   // every step. Call from Solver::prepare; returns a handle for neighbours().
@@ -51,7 +54,8 @@ class World {
   const NeighbourList& neighbours(int handle) const { return lists_.at(std::size_t(handle)).list; }
   const NeighbourGrid& grid() const { return grid_; }
 
-  // Boundary volumes (Akinci et al. 2012), then every solver's prepare.
+  // Boundary volumes of frozen particles (Akinci et al. 2012), every body system's prepare, then
+  // every solver's prepare.
   void prepare();
 
   // The next step size: the fixed dt, or the minimum over solvers clamped to [dt_min, dt_max].
@@ -84,6 +88,7 @@ class World {
   NeighbourGrid grid_;
   std::vector<ListRequest> lists_;
   std::vector<std::unique_ptr<Solver>> solvers_;
+  std::vector<std::unique_ptr<BodySystem>> bodies_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   bool prepared_ = false;

@@ -6,6 +6,12 @@
 
 namespace upf {
 
+void EquationOfStateSolver::add_reactions(World& world, const FluidView& f, const Real* density,
+                                          const Real* pressure) const {
+  fluid_.add_reactions(world, f, density,
+                       [&](std::uint32_t i) { return pressure[i] / (density[i] * density[i]); });
+}
+
 void EquationOfStateSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
   prepare_method(world);

@@ -34,6 +34,11 @@ class EquationOfStateSolver : public Solver {
   virtual void compute_pressure(const World& world, const FluidView& f, const Real* density,
                                 Real* pressure) = 0;
 
+  // Reactions on rigid boundary particles (boundary_reactions.h). The default is the pair term
+  // p_i / rho_i^2 with the cubic spline; a solver whose boundary term differs overrides it.
+  virtual void add_reactions(World& world, const FluidView& f, const Real* density,
+                             const Real* pressure) const;
+
   const std::vector<MaterialId>& materials() const { return materials_; }
   FluidSolverState& fluid() { return fluid_; }
   const FluidSolverState& fluid() const { return fluid_; }

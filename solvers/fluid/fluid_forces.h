@@ -13,7 +13,9 @@
 
 namespace upf {
 
-// Density of fluid particle i, with fluid positions taken from `xf` (current or predicted).
+// Density of fluid particle i, with every position taken from `xf` (current or predicted; a
+// moving boundary must be predicted too, or an approaching body is seen a step late and runs
+// fluid over).
 UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32_t i) {
   const Vec3 xi = xf[i];
   Real rho = f.mass[i] * f.kernel.value(Real(0));
@@ -24,7 +26,7 @@ UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32
   const Real rho0 = f.rest_density[f.material[i]];
   for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
     const std::uint32_t b = f.boundary.indices[k];
-    rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - f.x[b]);
+    rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - xf[b]);
   }
   return rho;
 }

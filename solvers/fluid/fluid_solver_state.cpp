@@ -12,6 +12,9 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   p.scalar_field("density", 0, true);
   p.scalar_field("pressure", 0, true);
   lists.request(world);
+  // Reactions are gathered from the rigid side: for each rigid particle, its liquid neighbours.
+  if (p.find_vector(kBoundaryForceField) && p.count(ParticleType::Rigid) > 0)
+    reaction_list = world.request_neighbours(mask_of(ParticleType::Rigid), kLiquidMask);
   table.load(world);
   owned.set_materials(world.materials().size(), materials);
   max_viscosity = 0;

@@ -3,12 +3,16 @@
 //   begin_step       the owned index list and the view of the current state;
 //   shared_forces    "non_pressure": density and kernel gradients at the current positions, then
 //                    a_other = g + viscosity (fluid_forces.h);
+//   add_reactions    the reactions on rigid boundary particles (boundary_reactions.h), at the
+//                    positions and velocities the forces used, so before integrate;
 //   integrate        symplectic Euler, v += (a_other + a_pressure) dt, then x += v dt.
 // The pressure stage between shared_forces and integrate is each solver's own.
 #pragma once
 
 #include <vector>
 
+#include "framework/world/world.h"
+#include "solvers/fluid/boundary_reactions.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
 
@@ -17,6 +21,7 @@ namespace upf {
 struct FluidSolverState {
   FluidMaterialTable table;
   FluidNeighbourHandles lists;
+  int reaction_list = -1;  // rigid -> liquid, when a body system collects reactions
   OwnedParticles owned;
   Real max_viscosity = 0;  // [m^2/s] largest kinematic viscosity of the owned materials
 
@@ -33,6 +38,26 @@ struct FluidSolverState {
   FluidView begin_step(const World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
   void shared_forces(const World& world, const FluidView& f, Real* density);
+  // Adds the reactions of the owned particles' boundary forces to kBoundaryForceField, when the
+  // world has rigid particles. `pressure_factor(i)` is P_i of boundary_reactions.h;
+  // `pressure_gradient(r)` the gradient of the solver's pressure term.
+  template <class PressureFactor, class PressureGradient>
+  void add_reactions(World& world, const FluidView& f, const Real* density,
+                     PressureFactor&& pressure_factor, PressureGradient&& pressure_gradient) const {
+    if (reaction_list < 0) return;
+    std::vector<Vec3>* force = world.particles().find_vector(kBoundaryForceField);
+    add_boundary_reactions(
+        world.executor(), f, view_of(world.neighbours(reaction_list)), density,
+        [&](MaterialId m) { return owned.owns(m); }, pressure_factor, pressure_gradient,
+        force->data(), force->size());
+  }
+  // The same with the cubic spline gradient, which every solver's pressure term uses by default.
+  template <class PressureFactor>
+  void add_reactions(World& world, const FluidView& f, const Real* density,
+                     PressureFactor&& pressure_factor) const {
+    add_reactions(world, f, density, pressure_factor,
+                  [&](const Vec3& r) { return f.kernel.gradient(r); });
+  }
   // Symplectic Euler over the owned particles with other_acceleration + pressure_acceleration.
   void integrate(World& world, Real dt) const;
 };

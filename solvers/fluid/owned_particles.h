@@ -23,6 +23,7 @@ class OwnedParticles {
   std::size_t size() const { return indices_.size(); }
   bool empty() const { return indices_.empty(); }
   std::uint32_t operator[](std::size_t k) const { return indices_[k]; }
+  bool owns(MaterialId m) const { return m < owns_.size() && owns_[m] != 0; }
 
   // Runs body(i) for every owned particle index i, in parallel.
   template <class Body>

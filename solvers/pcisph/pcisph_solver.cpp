@@ -84,7 +84,12 @@ void PcisphSolver::step(World& world, Real dt) {
   });
   stats_.stage_ms.emplace_back("non_pressure", watch.lap_ms());
 
-  // Predict-correct loop.
+  // Predict-correct loop. Particles this solver does not move (boundaries, bodies, other
+  // fluids) are predicted once, moving on at their current velocity; static walls stay put.
+  exec.for_each(p.size(), [&](std::size_t i) {
+    if (f.type[i] != ParticleType::Liquid || !owned.owns(f.material[i]))
+      x_star[i] = f.x[i] + f.v[i] * dt;
+  });
   const double delta = delta_scale_ / (double(dt) * double(dt));
   double avg_error = 0;
   int iteration = 0;
@@ -111,7 +116,11 @@ void PcisphSolver::step(World& world, Real dt) {
   stats_.max_density_error = max_compression(exec, owned, f, rho_star);
   stats_.stage_ms.emplace_back("pressure", watch.lap_ms());
 
-  // Symplectic Euler with the final pressure forces.
+  // Reactions on rigid bodies, then symplectic Euler with the final pressure forces.
+  fluid_.add_reactions(world, f, density, [&](std::uint32_t i) {
+    const Real rho0 = f.rest_density[f.material[i]];
+    return pressure[i] / (rho0 * rho0);
+  });
   fluid_.integrate(world, dt);
   stats_.stage_ms.emplace_back("integration", watch.lap_ms());
 }

@@ -105,4 +105,16 @@ void SphSolver::compute_pressure(const World& world, const FluidView& f, const R
   });
 }
 
+void SphSolver::add_reactions(World& world, const FluidView& f, const Real* density,
+                              const Real* pressure) const {
+  // The boundary term of sph_pressure_acceleration: P_i = p_i / (2 rho_i^2), with the pressure
+  // kernel of the set in use.
+  with_kernels(world, [&](const auto& kernels, Real) {
+    fluid().add_reactions(
+        world, f, density,
+        [&](std::uint32_t i) { return pressure[i] / (Real(2) * density[i] * density[i]); },
+        [&](const Vec3& r) { return kernels.pressure_gradient(r); });
+  });
+}
+
 }  // namespace upf

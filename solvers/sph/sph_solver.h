@@ -69,6 +69,8 @@ class SphSolver final : public EquationOfStateSolver {
   // p = k (rho - rho0) and the paper's pressure acceleration.
   void compute_pressure(const World& world, const FluidView& f, const Real* density,
                         Real* pressure) override;
+  void add_reactions(World& world, const FluidView& f, const Real* density,
+                     const Real* pressure) const override;
   // Calls visit(kernels, density_scale) with the kernel set chosen by `cubic_spline`.
   template <class Visit>
   void with_kernels(const World& world, Visit&& visit) const;

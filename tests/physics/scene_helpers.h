@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "coupling/bodies/bodies_section.h"
 #include "framework/scene/scene_builder.h"
 #include "framework/scene/scene_reader.h"
 #include "solvers/register_builtin_solvers.h"
@@ -27,8 +28,15 @@ inline Registry builtin_registry() {
   return r;
 }
 
+// The built-ins plus the "bodies" scene section of coupling/.
+inline Registry coupled_registry() {
+  Registry r = builtin_registry();
+  register_coupling(r);
+  return r;
+}
+
 struct TestWorld {
-  Registry registry = builtin_registry();
+  Registry registry = coupled_registry();
   SceneDescription scene;
   std::unique_ptr<World> world;
 

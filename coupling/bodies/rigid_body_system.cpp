@@ -1,0 +1,310 @@
+#include "coupling/bodies/rigid_body_system.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+
+#include "framework/core/errors.h"
+#include "framework/output/mesh_vtp_writer.h"
+#include "framework/world/world.h"
+
+namespace upf {
+
+namespace {
+
+// Bullet's collision margin: a tenth of the spacing keeps contacts within a particle's reach of
+// the surface (Bullet's default, 4 cm, is two particles at the usual 2 cm spacing).
+constexpr double kMarginPerSpacing = 0.1;
+
+Vec3 to_vec3(const Eigen::Vector3d& v) {
+  return {Real(v.x()), Real(v.y()), Real(v.z())};
+}
+Eigen::Vector3d to_eigen(const Vec3& v) {
+  return {double(v.x), double(v.y), double(v.z)};
+}
+
+btTransform to_bt(const Eigen::Vector3d& origin, const Eigen::Quaterniond& q) {
+  btTransform t;
+  t.setOrigin(upf::to_bt(origin));
+  t.setRotation(btQuaternion(btScalar(q.x()), btScalar(q.y()), btScalar(q.z()), btScalar(q.w())));
+  return t;
+}
+
+// The frame's current origin, rotation, linear and angular velocity.
+struct Frame {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
+};
+
+}  // namespace
+
+RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWall> walls,
+                                 double spacing, const Eigen::Vector3d& gravity)
+    : bodies_(std::move(bodies)),
+      walls_(std::move(walls)),
+      spacing_(spacing),
+      bullet_(std::make_unique<BulletWorld>(gravity)) {
+  const double margin = kMarginPerSpacing * spacing_;
+  for (const auto& w : walls_)
+    bullet_->add_static_box(w.center, w.half_extents, w.friction, w.restitution, margin);
+  for (Body& b : bodies_) {
+    const BodySource& s = b.source;
+    if (s.kind == BodyKind::Dynamic) {
+      // Principal axes: a right-handed eigenbasis of the inertia tensor.
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s.mass->inertia);
+      Eigen::Matrix3d axes = eig.eigenvectors();
+      if (axes.determinant() < 0) axes.col(2) = -axes.col(2);
+      b.origin0 = s.mass->center_of_mass;
+      b.rotation0 = Eigen::Quaterniond(axes).normalized();
+    } else {
+      b.origin0 = s.pivot;
+      b.rotation0 = Eigen::Quaterniond::Identity();
+    }
+    const Eigen::Matrix3d to_local = b.rotation0.toRotationMatrix().transpose();
+    b.local_vertices.clear();
+    for (const auto& v : s.mesh.vertices) {
+      b.local_vertices.push_back(to_local * (v - b.origin0));
+      b.reach = std::max(b.reach, b.local_vertices.back().norm());
+    }
+    b.shape =
+        make_body_shape(s.mesh, b.local_vertices, s.kind, s.mass ? s.mass->volume : 0.0, margin);
+    const double mass = s.kind == BodyKind::Dynamic ? s.mass->mass : 0.0;
+    btVector3 inertia(0, 0, 0);
+    if (s.kind == BodyKind::Dynamic) {
+      // The diagonal of the inertia tensor in the principal frame.
+      const Eigen::Matrix3d local = to_local * s.mass->inertia * to_local.transpose();
+      inertia = btVector3(btScalar(local(0, 0)), btScalar(local(1, 1)), btScalar(local(2, 2)));
+    }
+    btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, b.shape.shape.get(),
+                                                  inertia);
+    info.m_startWorldTransform = to_bt(b.origin0, b.rotation0);
+    info.m_friction = btScalar(s.friction);
+    info.m_restitution = btScalar(s.restitution);
+    b.rigid = std::make_unique<btRigidBody>(info);
+    if (s.kind == BodyKind::Dynamic) {
+      b.rigid->setLinearVelocity(upf::to_bt(s.velocity));
+      b.rigid->setAngularVelocity(upf::to_bt(s.angular_velocity));
+    } else if (s.kind == BodyKind::Kinematic) {
+      b.rigid->setCollisionFlags(b.rigid->getCollisionFlags() |
+                                 btCollisionObject::CF_KINEMATIC_OBJECT);
+    }
+    // Bodies in a fluid never sleep: the fluid keeps pushing them.
+    b.rigid->setActivationState(DISABLE_DEACTIVATION);
+    bullet_->add(b.rigid.get());
+  }
+  read_states();
+}
+
+RigidBodySystem::~RigidBodySystem() {
+  bullet_.reset();  // removes the bodies before they are destroyed
+}
+
+void RigidBodySystem::add_particles(Particles& particles) const {
+  std::vector<Vec3>& local = particles.vector_field(kBodyLocalPositionField);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Body& body = bodies_[b];
+    const ParticleType type =
+        body.source.kind == BodyKind::Dynamic ? ParticleType::Rigid : ParticleType::Frozen;
+    const Eigen::Matrix3d to_local = body.rotation0.toRotationMatrix().transpose();
+    for (const auto& x : body.source.samples) {
+      particles.add(to_vec3(x), to_vec3(body.source.velocity), Real(0), type,
+                    body.source.material_id, BodyId(b));
+      local.push_back(to_vec3(to_local * (x - body.origin0)));
+    }
+  }
+}
+
+void RigidBodySystem::prepare(World& world) {
+  Particles& p = world.particles();
+  if (p.count(ParticleType::Rigid) > 0) p.vector_field(kBoundaryForceField);
+  // Akinci volumes over each particle's own body (see the header).
+  const TypeMask mask = kBoundaryMask;
+  NeighbourList list;
+  world.grid().find_neighbours(p, mask, mask, world.settings().support_radius(), world.executor(),
+                               list);
+  const CubicSplineKernel w = world.kernel();
+  Real* volume = p.boundary_volume.data();
+  const BodyId* body = p.body.data();
+  const Vec3* x = p.position.data();
+  world.executor().for_each(p.size(), [&](std::size_t i) {
+    if (body[i] == kNoBody) return;
+    Real sum = w.value(Real(0));
+    for (std::uint32_t k = list.offsets[i]; k < list.offsets[i + 1]; ++k) {
+      const std::uint32_t j = list.indices[k];
+      if (body[j] == body[i]) sum += w.value(x[i] - x[j]);
+    }
+    volume[i] = Real(1) / sum;
+  });
+}
+
+void RigidBodySystem::update_kinematic(double t, double dt) {
+  for (Body& b : bodies_) {
+    if (!b.motion) continue;
+    // Bullet derives a kinematic body's velocity from its last pose (the interpolation
+    // transform) and the pose it will have at the step's end, which is set here.
+    const RigidPose end = b.motion->pose(t + dt);
+    const Eigen::Quaterniond q = (end.orientation * b.rotation0).normalized();
+    b.rigid->setWorldTransform(to_bt(b.origin0 + end.position, q));
+  }
+}
+
+void RigidBodySystem::place_particles(World& world, double dt) {
+  const double t = world.time();
+  std::vector<Frame> frames(bodies_.size());
+  std::vector<char> moves(bodies_.size(), 0);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Body& body = bodies_[b];
+    Frame& f = frames[b];
+    if (body.source.kind == BodyKind::Dynamic) {
+      const btTransform& tr = body.rigid->getCenterOfMassTransform();
+      f.origin = from_bt(tr.getOrigin());
+      const btQuaternion q = tr.getRotation();
+      f.rotation = Eigen::Quaterniond(double(q.w()), double(q.x()), double(q.y()), double(q.z()))
+                       .normalized()
+                       .toRotationMatrix();
+      f.velocity = from_bt(body.rigid->getLinearVelocity());
+      f.angular_velocity = from_bt(body.rigid->getAngularVelocity());
+      moves[b] = 1;
+    } else if (body.motion) {
+      const RigidPose pose = body.motion->pose(t);
+      const RigidVelocity v = body.motion->velocity(t);
+      f.origin = body.origin0 + pose.position;
+      f.rotation = pose.orientation.toRotationMatrix();
+      f.velocity = v.linear;
+      f.angular_velocity = v.angular;
+      moves[b] = body.motion->moves() ? 1 : 0;
+    }
+  }
+  update_kinematic(t, dt);
+
+  Particles& p = world.particles();
+  const std::vector<Vec3>& local = *p.find_vector(kBodyLocalPositionField);
+  Vec3* x = p.position.data();
+  Vec3* v = p.velocity.data();
+  const BodyId* body = p.body.data();
+  world.executor().for_each(p.size(), [&](std::size_t i) {
+    const BodyId b = body[i];
+    if (b == kNoBody || !moves[std::size_t(b)]) return;
+    const Frame& f = frames[std::size_t(b)];
+    const Eigen::Vector3d r = f.rotation * to_eigen(local[i]);
+    x[i] = to_vec3(f.origin + r);
+    v[i] = to_vec3(f.velocity + f.angular_velocity.cross(r));
+  });
+}
+
+void RigidBodySystem::advance(World& world, double dt) {
+  std::vector<Eigen::Vector3d> force(bodies_.size(), Eigen::Vector3d::Zero());
+  std::vector<Eigen::Vector3d> torque(bodies_.size(), Eigen::Vector3d::Zero());
+  Particles& p = world.particles();
+  if (const std::vector<Vec3>* reaction = p.find_vector(kBoundaryForceField)) {
+    std::vector<Eigen::Vector3d> origin(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      origin[b] = from_bt(bodies_[b].rigid->getCenterOfMassPosition());
+    // One thread, index order: a fixed order of additions (see the header).
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const BodyId b = p.body[i];
+      if (b == kNoBody || p.type[i] != ParticleType::Rigid) continue;
+      const Eigen::Vector3d f = to_eigen((*reaction)[i]);
+      force[std::size_t(b)] += f;
+      torque[std::size_t(b)] += (to_eigen(p.position[i]) - origin[std::size_t(b)]).cross(f);
+    }
+  }
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    Body& body = bodies_[b];
+    body.state.fluid_force = force[b];
+    body.state.fluid_torque = torque[b];
+    if (body.source.kind != BodyKind::Dynamic) continue;
+    body.rigid->applyCentralForce(upf::to_bt(force[b]));
+    body.rigid->applyTorque(upf::to_bt(torque[b]));
+  }
+  bullet_->step(dt);
+  time_ = world.time() + dt;
+  read_states();
+}
+
+void RigidBodySystem::read_states() {
+  for (Body& b : bodies_) {
+    const btTransform& tr = b.rigid->getCenterOfMassTransform();
+    const btQuaternion q = tr.getRotation();
+    const Eigen::Quaterniond now(double(q.w()), double(q.x()), double(q.y()), double(q.z()));
+    b.state.position = from_bt(tr.getOrigin());
+    b.state.orientation = (now * b.rotation0.conjugate()).normalized();
+    b.state.velocity = from_bt(b.rigid->getLinearVelocity());
+    b.state.angular_velocity = from_bt(b.rigid->getAngularVelocity());
+  }
+}
+
+double RigidBodySystem::max_time_step(const World& world) const {
+  // A body's fastest point moves at most 0.4 particle spacings per step, like the fluid's CFL.
+  double fastest = 0;
+  for (const Body& b : bodies_) {
+    if (b.source.kind == BodyKind::Static) continue;
+    fastest =
+        std::max(fastest, b.state.velocity.norm() + b.state.angular_velocity.norm() * b.reach);
+  }
+  if (fastest <= 0) return BodySystem::max_time_step(world);
+  return world.settings().time.cfl * double(world.settings().spacing) / fastest;
+}
+
+Eigen::Vector3d RigidBodySystem::momentum() const {
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (const Body& b : bodies_)
+    if (b.source.kind == BodyKind::Dynamic) total += b.source.mass->mass * b.state.velocity;
+  return total;
+}
+
+void RigidBodySystem::open_outputs(const std::filesystem::path& out_dir, bool write_frames) {
+  write_meshes_ = write_frames;
+  csv_path_ = out_dir / "bodies.csv";
+  csv_.open(csv_path_, std::ios::trunc);
+  if (!csv_) throw OutputError("cannot write " + csv_path_.string());
+  csv_ << "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,fx,fy,fz,tx,ty,tz\n";
+}
+
+std::vector<std::string> RigidBodySystem::write_frame(const std::filesystem::path& out_dir,
+                                                      int frame, double time) {
+  std::vector<std::string> files;
+  if (write_meshes_) {
+    // Each body's mesh in its current pose: x = X + R r0 over the body-frame vertices.
+    std::vector<MeshPiece> pieces;
+    std::vector<double> speed, force;
+    for (const Body& b : bodies_) {
+      const btTransform& tr = b.rigid->getCenterOfMassTransform();
+      MeshPiece piece;
+      piece.name = b.source.name;
+      for (const auto& r : b.local_vertices) piece.vertices.push_back(from_bt(tr * upf::to_bt(r)));
+      piece.triangles = b.source.mesh.triangles;
+      pieces.push_back(std::move(piece));
+      speed.push_back(b.state.velocity.norm());
+      force.push_back(b.state.fluid_force.norm());
+    }
+    char name[64];
+    std::snprintf(name, sizeof name, "frames/bodies_%05d.vtp", frame);
+    write_mesh_vtp(out_dir / name, pieces, {{"speed", speed}, {"fluid_force", force}});
+    files.push_back(name);
+  }
+  if (csv_.is_open()) {
+    csv_ << std::setprecision(9);
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      const BodyState& s = bodies_[b].state;
+      csv_ << time << ',' << b << ',' << bodies_[b].source.name;
+      for (double c :
+           {s.position.x(), s.position.y(), s.position.z(), s.orientation.w(), s.orientation.x(),
+            s.orientation.y(), s.orientation.z(), s.velocity.x(), s.velocity.y(), s.velocity.z(),
+            s.angular_velocity.x(), s.angular_velocity.y(), s.angular_velocity.z(),
+            s.fluid_force.x(), s.fluid_force.y(), s.fluid_force.z(), s.fluid_torque.x(),
+            s.fluid_torque.y(), s.fluid_torque.z()})
+        csv_ << ',' << c;
+      csv_ << '\n';
+    }
+    csv_.flush();
+    if (!csv_) throw OutputError("cannot write " + csv_path_.string() + " (disk full?)");
+  }
+  return files;
+}
+
+}  // namespace upf

@@ -1,0 +1,103 @@
+// Rigid bodies and mesh obstacles in the particle world (DESIGN.md, "One step", stages 1 and 4):
+// Bullet moves the bodies; their boundary particles, sampled on the mesh surface, follow them;
+// fluids push the particles and the pushes, summed per body, push the bodies (two-way coupling of
+// Akinci et al. 2012, "Versatile rigid-fluid coupling for incompressible SPH", ACM TOG 31(4)).
+//
+// Body frames: a dynamic body's frame sits at its centre of mass along its principal axes, so
+// Bullet gets a diagonal inertia tensor; a static or kinematic body's frame sits at its pivot
+// with the world's axes. Each boundary particle keeps its position in the body frame (field
+// kBodyLocalPositionField) and is placed at x = X + R r0 with v = V + w x (x - X) every step.
+//
+// Boundary volumes (Akinci's V_b = 1 / sum_k W_bk) sum over the particle's own body only, so they
+// are computed once: a body's sampling does not change as it moves past walls and other bodies.
+//
+// Per-body sums run over the particles in index order on one thread, and Bullet steps on one
+// thread: the same bits for any thread count.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coupling/bodies/body_source.h"
+#include "coupling/bodies/bullet_world.h"
+#include "coupling/bodies/collision_shapes.h"
+#include "coupling/motion/prescribed_motion.h"
+#include "framework/scene/scene.h"
+#include "framework/world/body_system.h"
+
+namespace upf {
+
+inline constexpr const char* kBodyLocalPositionField = "body.local_position";
+
+// A wall slab of a particle container, for Bullet contacts with the container.
+struct StaticWall {
+  Eigen::Vector3d center, half_extents;
+  double friction = 0.5, restitution = 0.1;
+};
+
+// The state of a body as reported in bodies.csv.
+struct BodyState {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // frame origin (centre of mass if dynamic)
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // relative to the start
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d fluid_force = Eigen::Vector3d::Zero();   // N, the last step's
+  Eigen::Vector3d fluid_torque = Eigen::Vector3d::Zero();  // N m, about the frame origin
+};
+
+class RigidBodySystem : public BodySystem {
+ public:
+  struct Body {
+    BodySource source;
+    std::optional<PrescribedMotion> motion;                         // kinematic bodies
+    Eigen::Vector3d origin0 = Eigen::Vector3d::Zero();              // initial frame origin
+    Eigen::Quaterniond rotation0 = Eigen::Quaterniond::Identity();  // initial frame axes
+    std::vector<Eigen::Vector3d> local_vertices;                    // mesh in the body frame
+    double reach = 0;  // largest distance of a vertex from the frame origin
+    OwnedShape shape;
+    std::unique_ptr<btRigidBody> rigid;
+    BodyState state;
+  };
+
+  // `spacing` is the particle spacing (Bullet's collision margin is a fraction of it).
+  RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWall> walls, double spacing,
+                  const Eigen::Vector3d& gravity);
+  ~RigidBodySystem() override;
+
+  // Adds each body's boundary particles (type from its material, body id = its index).
+  void add_particles(Particles& particles) const;
+
+  std::string_view name() const override { return "bodies"; }
+  void prepare(World& world) override;
+  void place_particles(World& world, double dt) override;
+  void advance(World& world, double dt) override;
+  double max_time_step(const World& world) const override;
+  void open_outputs(const std::filesystem::path& out_dir, bool write_frames) override;
+  std::vector<std::string> write_frame(const std::filesystem::path& out_dir, int frame,
+                                       double time) override;
+
+  const std::vector<Body>& bodies() const { return bodies_; }
+  // The state of body `b` now (its fluid force and torque: those of the last step).
+  const BodyState& state(std::size_t b) const { return bodies_[b].state; }
+  // Momentum of the dynamic bodies, kg m/s.
+  Eigen::Vector3d momentum() const;
+
+ private:
+  void read_states();
+  void update_kinematic(double t, double dt);
+
+  std::vector<Body> bodies_;
+  std::vector<StaticWall> walls_;
+  double spacing_;
+  std::unique_ptr<BulletWorld> bullet_;
+  double time_ = 0;
+  std::ofstream csv_;
+  std::filesystem::path csv_path_;
+  bool write_meshes_ = false;
+};
+
+}  // namespace upf

@@ -1,0 +1,49 @@
+// Bodies in the particle world: whatever owns boundary particles that move as a whole (rigid
+// bodies, kinematic obstacles). The world calls it around the solvers (DESIGN.md, "One step"):
+//
+//   1 place_particles: the system's particles follow their bodies, x = X + R r0,
+//     v = V + w x (x - X), before the neighbour grid is built;
+//   3 the solvers run; fluid solvers add their reactions on boundary particles into the field
+//     kBoundaryForceField (Akinci et al. 2012, eq. 11);
+//   4 advance: per body, the reactions are summed into a force and a torque and the bodies step.
+//
+// The framework only calls this interface; coupling/ implements it with Bullet.
+#pragma once
+
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/core/real.h"
+
+namespace upf {
+
+class World;
+
+// The per-particle force (N) that fluids exert on boundary particles during a step: a vector
+// field created by a body system that needs it, zeroed by the world before the solvers run.
+inline constexpr const char* kBoundaryForceField = "boundary_force";
+
+class BodySystem {
+ public:
+  virtual ~BodySystem() = default;
+  virtual std::string_view name() const = 0;
+  // Before the solvers' prepare: boundary volumes of the system's particles, fields it needs.
+  virtual void prepare(World& world) = 0;
+  // Step 1: sets positions and velocities of the system's particles for a step of dt.
+  virtual void place_particles(World& world, double dt) = 0;
+  // Step 4: applies the summed reactions and advances the bodies by dt.
+  virtual void advance(World& world, double dt) = 0;
+  // The largest step the bodies allow (fast bodies must not cross a particle per step).
+  virtual double max_time_step(const World&) const { return std::numeric_limits<double>::max(); }
+
+  // Outputs, called by the run: `open` once before the first frame; `write_frame` per frame
+  // returns the files it wrote (relative to out_dir) so they join the frame's .pvd entry.
+  virtual void open_outputs(const std::filesystem::path& out_dir, bool write_frames) = 0;
+  virtual std::vector<std::string> write_frame(const std::filesystem::path& out_dir, int frame,
+                                               double time) = 0;
+};
+
+}  // namespace upf

@@ -1,0 +1,28 @@
+#include "materials/rigid.h"
+
+namespace upf {
+
+std::vector<ParamSpec> contact_params() {
+  return {
+      {"friction", "1", 0.5, 0, 10, "Coulomb friction coefficient of body contacts (Bullet)"},
+      {"restitution", "1", 0.1, 0, 1, "restitution coefficient of body contacts (Bullet)"},
+  };
+}
+
+MaterialKind rigid_material_kind() {
+  std::vector<ParamSpec> params = {
+      {"density", "kg/m^3", 1000, 1, 1e5,
+       "density of the body: mass and inertia follow from the closed mesh"},
+  };
+  for (auto& p : contact_params()) params.push_back(p);
+  return {
+      "rigid",
+      ParticleType::Rigid,
+      "a rigid body from a closed mesh, moved by Bullet and coupled two-way with fluids through "
+      "boundary particles on its surface (Akinci et al. 2012)",
+      params,
+      "",
+  };
+}
+
+}  // namespace upf

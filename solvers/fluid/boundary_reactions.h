@@ -1,0 +1,57 @@
+// The reactions of fluid forces on rigid boundary particles (Akinci et al. 2012, "Versatile
+// rigid-fluid coupling for incompressible SPH", ACM TOG 31(4), eq. 11 and 13): the force a
+// boundary particle b exerts on fluid particle i is put, with the opposite sign, on b.
+//
+// Every fluid solver here writes its boundary pressure acceleration as
+//   a_i = -rho0_i P_i sum_b V_b grad W_ib,
+// with P_i its own pressure factor (PCISPH p_i/rho0^2, WCSPH p_i/rho_i^2, SPH p_i/(2 rho_i^2)),
+// and the shared boundary viscosity of fluid_forces.h. So the reaction on b is
+//   F_b = sum_i m_i [ rho0_i P_i V_b grad W_ib
+//                     - 10 nu_b,i rho0_i V_b / rho_i (v_ib . x_ib) / (|x_ib|^2 + 0.01 H^2) grad
+//                     W_ib ]
+// gathered over b's fluid neighbours: no scatter, no atomics, the same bits for any thread
+// count. The pairs cancel exactly up to rounding, so fluid and bodies together conserve momentum.
+#pragma once
+
+#include "framework/executors/cpu/cpu_executor.h"
+#include "solvers/fluid/fluid_view.h"
+
+namespace upf {
+
+// `fluid_of_boundary` lists, for each rigid particle b, its liquid neighbours; only those with
+// `owns(material)` count (the solver's own particles). `pressure_factor(i)` is P_i;
+// `pressure_gradient(r)` is the kernel gradient the solver's pressure term uses.
+template <class Owns, class PressureFactor, class PressureGradient>
+void add_boundary_reactions(const CpuExecutor& exec, const FluidView& f,
+                            const NeighbourView& fluid_of_boundary, const Real* density,
+                            Owns&& owns, PressureFactor&& pressure_factor,
+                            PressureGradient&& pressure_gradient, Vec3* force, std::size_t n) {
+  const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
+  exec.for_each(n, [&](std::size_t b) {
+    const std::uint32_t begin = fluid_of_boundary.offsets[b];
+    const std::uint32_t end = fluid_of_boundary.offsets[b + 1];
+    if (begin == end) return;
+    const Vec3 xb = f.x[b];
+    const Vec3 vb = f.v[b];
+    const Real vol = f.boundary_volume[b];
+    Vec3 sum{};
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t i = fluid_of_boundary.indices[k];
+      const MaterialId m = f.material[i];
+      if (!owns(m)) continue;
+      const Vec3 xib = f.x[i] - xb;
+      const Real rho0 = f.rest_density[m];
+      Vec3 pair = pressure_gradient(xib) * (rho0 * pressure_factor(i) * vol);
+      const Real nub = f.boundary_viscosity[m];
+      if (nub > 0) {
+        const Real vx = dot(f.v[i] - vb, xib);
+        pair -= f.kernel.gradient(xib) * (Real(10) * nub * rho0 * vol / density[i] * vx /
+                                          (squared_norm(xib) + Real(0.01) * h2));
+      }
+      sum += pair * f.mass[i];
+    }
+    force[b] += sum;
+  });
+}
+
+}  // namespace upf

@@ -1,0 +1,80 @@
+// Bodies in scene files through the `upf` program: broken meshes are bad input (exit code 2,
+// the file named), and a run with bodies writes bodies.csv and the body meshes into the frames.
+#include <fstream>
+#include <sstream>
+
+#include "cli_support.h"
+
+namespace upf::cli_test {
+namespace {
+
+const std::string kMeshes = std::string(UPF_SOURCE_DIR) + "/tests/data/meshes/";
+const std::string kAssets = std::string(UPF_SOURCE_DIR) + "/assets/meshes/";
+
+class Bodies : public Cli {
+ protected:
+  // The small dam break with one body of `material` made from `mesh`.
+  nlohmann::json with_body(const std::string& mesh, const std::string& material = "wood") const {
+    nlohmann::json doc = sample();
+    doc["materials"]["wood"] = {{"type", "rigid"}, {"density", 500}};
+    doc["bodies"] = {{{"name", "crate"},
+                      {"material", material},
+                      {"mesh", {{"file", mesh}, {"scale", 0.2}, {"position", {1.2, 0.5, 0.2}}}}}};
+    return doc;
+  }
+};
+
+TEST_F(Bodies, MissingMeshFileIsBadInputNamingTheFile) {
+  expect_rejected(with_body(kMeshes + "no_such_mesh.obj"), {"/bodies/0/mesh", "no_such_mesh.obj"});
+}
+
+TEST_F(Bodies, UnsupportedFormatIsBadInputNamingTheFile) {
+  expect_rejected(with_body(kMeshes + "not_a_mesh.txt"), {"/bodies/0/mesh", "not_a_mesh.txt"});
+}
+
+TEST_F(Bodies, EmptyMeshIsBadInputNamingTheFile) {
+  expect_rejected(with_body(kMeshes + "empty.obj"), {"/bodies/0/mesh", "empty.obj"});
+}
+
+TEST_F(Bodies, OpenMeshForARigidBodyIsBadInputNamingTheFile) {
+  expect_rejected(with_body(kMeshes + "open_box.obj"),
+                  {"/bodies/0/mesh", "open_box.obj", "closed"});
+}
+
+TEST_F(Bodies, OpenMeshIsAcceptedAsAStaticObstacle) {
+  // A frozen obstacle needs no volume: an open surface (a ramp, a half-pipe) is fine.
+  const Result r = run_upf("validate " + write(with_body(kMeshes + "open_box.obj", "walls")));
+  EXPECT_EQ(r.code, 0) << r.output;
+}
+
+TEST_F(Bodies, LiquidMaterialForABodyIsBadInput) {
+  expect_rejected(with_body(kAssets + "unit_box.obj", "water"), {"/bodies/0/material", "liquid"});
+}
+
+TEST_F(Bodies, BodyOutsideEveryContainerIsBadInput) {
+  nlohmann::json doc = with_body(kAssets + "unit_box.obj");
+  doc["bodies"][0]["mesh"]["position"] = {5, 5, 5};
+  expect_rejected(doc, {"/bodies/0/mesh", "not inside any container"});
+}
+
+TEST_F(Bodies, RunWritesBodiesCsvAndBodyMeshesInThePvdSeries) {
+  const std::string out = (dir_ / "out").string();
+  const Result r =
+      run_upf("run " + write(with_body(kAssets + "unit_box.obj")) + " --end 0.05 --out " + out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream csv(out + "/bodies.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,fx,fy,fz,tx,ty,tz");
+  int rows = 0;
+  while (std::getline(csv, row)) ++rows;
+  EXPECT_GE(rows, 2);
+  std::stringstream pvd;
+  pvd << std::ifstream(out + "/particles.pvd").rdbuf();
+  EXPECT_NE(pvd.str().find("frames/bodies_00000.vtp"), std::string::npos) << pvd.str();
+  EXPECT_NE(pvd.str().find("part=\"1\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(out + "/frames/bodies_00001.vtp"));
+}
+
+}  // namespace
+}  // namespace upf::cli_test
