@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "coupling/bodies/fluid_carving.h"
 #include "coupling/bodies/rigid_body_system.h"
 #include "coupling/mesh/closed_mesh.h"
 #include "coupling/mesh/mass_properties.h"
@@ -38,12 +39,19 @@ bool load_body_mesh(const MeshSource& source, const std::string& path, double sp
     SurfaceSamplingOptions options;
     options.spacing = spacing;
     const SurfaceSamples samples = sample_surface(body.mesh, options, path);
-    body.samples = samples.positions;
-    // A second layer one spacing inside: one layer's repulsion fades as a fluid particle reaches
-    // it (the gradient of a thin sheet vanishes on the sheet), and fast impacts pushed fluid
-    // through; two layers keep the push, as the two-layer container walls do.
-    for (std::size_t k = 0; k < samples.positions.size(); ++k)
-      body.samples.push_back(samples.positions[k] - spacing * samples.normals[k]);
+    // Two layers, half a spacing and one and a half spacings inside the surface, as the layers
+    // of a container wall sit outside its box: fluid then rests with its particle centres half a
+    // spacing from the mesh, so its volume reaches the surface and a floating body displaces
+    // the volume of its mesh. Layers on the surface itself made bodies float high: fluid rests
+    // about one spacing from the samples, a skin of empty space that adds buoyancy. One layer
+    // alone lets fast impacts push fluid through (a sheet's gradient vanishes on the sheet).
+    body.samples.clear();
+    body.normals.clear();
+    for (double depth : {0.5, 1.5})
+      for (std::size_t k = 0; k < samples.positions.size(); ++k) {
+        body.samples.push_back(samples.positions[k] - depth * spacing * samples.normals[k]);
+        body.normals.push_back(depth == 0.5 ? samples.normals[k] : Eigen::Vector3d::Zero());
+      }
   } catch (const InputError& e) {
     for (const auto& p : e.problems()) in.problem(p.where.empty() ? path : p.where, p.message);
     return false;
@@ -193,6 +201,7 @@ void add_container_slabs(const ContainerDesc& c, double spacing, const Material&
 void build_bodies(World& world, const SceneDescription& scene, const SceneSectionData& section) {
   const auto& data = static_cast<const BodiesData&>(section);
   std::vector<RigidBodySystem::Body> bodies;
+  for (const auto& b : data.bodies) carve_fluid(world.particles(), b, double(scene.world.spacing));
   for (std::size_t i = 0; i < data.bodies.size(); ++i) {
     RigidBodySystem::Body b;
     b.source = data.bodies[i];

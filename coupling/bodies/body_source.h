@@ -25,10 +25,12 @@ struct BodySource {
   std::string material;
   MaterialId material_id = 0;  // index in SceneDescription::materials
   BodyKind kind = BodyKind::Static;
-  TriangleMesh mesh;                                   // in world coordinates, oriented outward
-  std::vector<Eigen::Vector3d> samples;                // surface samples, world coordinates
-  std::optional<MassProperties> mass;                  // dynamic bodies only
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, initial
+  TriangleMesh mesh;                     // in world coordinates, oriented outward
+  std::vector<Eigen::Vector3d> samples;  // boundary particles, world coordinates
+  // Outward unit normal of each sample on the surface; zero for the inner layer.
+  std::vector<Eigen::Vector3d> normals;
+  std::optional<MassProperties> mass;                          // dynamic bodies only
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // m/s, initial
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, initial, world axes
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  // static/kinematic: origin of the body frame
   double friction = 0.5, restitution = 0.1;

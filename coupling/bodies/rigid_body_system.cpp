@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iomanip>
 
+#include "coupling/mesh/closed_mesh.h"
 #include "framework/core/errors.h"
 #include "framework/output/mesh_vtp_writer.h"
 #include "framework/world/world.h"
@@ -17,6 +18,11 @@ namespace {
 // Bullet's collision margin: a tenth of the spacing keeps contacts within a particle's reach of
 // the surface (Bullet's default, 4 cm, is two particles at the usual 2 cm spacing).
 constexpr double kMarginPerSpacing = 0.1;
+// The outer sample layer lies half a spacing under the mesh surface (bodies_section.cpp); the
+// penetration guard puts a particle that got inside back a quarter spacing off the surface,
+// closer than fluid rests (about half a spacing), so the boundary forces take over from there.
+constexpr double kLayerDepthPerSpacing = 0.5;
+constexpr double kGuardClearancePerSpacing = 0.25;
 
 Vec3 to_vec3(const Eigen::Vector3d& v) {
   return {Real(v.x()), Real(v.y()), Real(v.z())};
@@ -32,14 +38,6 @@ btTransform to_bt(const Eigen::Vector3d& origin, const Eigen::Quaterniond& q) {
   return t;
 }
 
-// The frame's current origin, rotation, linear and angular velocity.
-struct Frame {
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
-};
-
 }  // namespace
 
 RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWall> walls,
@@ -47,7 +45,8 @@ RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWal
     : bodies_(std::move(bodies)),
       walls_(std::move(walls)),
       spacing_(spacing),
-      bullet_(std::make_unique<BulletWorld>(gravity)) {
+      bullet_(std::make_unique<BulletWorld>(gravity)),
+      guard_(kLayerDepthPerSpacing * spacing, kGuardClearancePerSpacing * spacing) {
   const double margin = kMarginPerSpacing * spacing_;
   for (const auto& w : walls_)
     bullet_->add_static_box(w.center, w.half_extents, w.friction, w.restitution, margin);
@@ -70,6 +69,11 @@ RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWal
       b.local_vertices.push_back(to_local * (v - b.origin0));
       b.reach = std::max(b.reach, b.local_vertices.back().norm());
     }
+    if (is_closed(s.mesh)) {
+      TriangleMesh local{b.local_vertices, s.mesh.triangles, s.mesh.source};
+      b.inside = std::make_unique<MeshInsideTest>(std::move(local), spacing_);
+    }
+    guarded_meshes_.push_back(b.inside.get());
     b.shape =
         make_body_shape(s.mesh, b.local_vertices, s.kind, s.mass ? s.mass->volume : 0.0, margin);
     const double mass = s.kind == BodyKind::Dynamic ? s.mass->mass : 0.0;
@@ -105,15 +109,19 @@ RigidBodySystem::~RigidBodySystem() {
 
 void RigidBodySystem::add_particles(Particles& particles) const {
   std::vector<Vec3>& local = particles.vector_field(kBodyLocalPositionField);
+  std::vector<Vec3>& normal = particles.vector_field(kBodyLocalNormalField);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     const ParticleType type =
         body.source.kind == BodyKind::Dynamic ? ParticleType::Rigid : ParticleType::Frozen;
     const Eigen::Matrix3d to_local = body.rotation0.toRotationMatrix().transpose();
-    for (const auto& x : body.source.samples) {
-      particles.add(to_vec3(x), to_vec3(body.source.velocity), Real(0), type,
-                    body.source.material_id, BodyId(b));
-      local.push_back(to_vec3(to_local * (x - body.origin0)));
+    for (std::size_t k = 0; k < body.source.samples.size(); ++k) {
+      const Eigen::Vector3d& x = body.source.samples[k];
+      // add() appends a zero to every named field; the body-frame values go in that slot.
+      const std::size_t i = particles.add(to_vec3(x), to_vec3(body.source.velocity), Real(0), type,
+                                          body.source.material_id, BodyId(b));
+      local[i] = to_vec3(to_local * (x - body.origin0));
+      normal[i] = to_vec3(to_local * body.source.normals[k]);
     }
   }
 }
@@ -139,6 +147,31 @@ void RigidBodySystem::prepare(World& world) {
     }
     volume[i] = Real(1) / sum;
   });
+  guard_.request(world);
+}
+
+BodyFrame RigidBodySystem::frame_of(const Body& body, double t) const {
+  BodyFrame f;
+  if (body.source.kind == BodyKind::Dynamic) {
+    const btTransform& tr = body.rigid->getCenterOfMassTransform();
+    f.origin = from_bt(tr.getOrigin());
+    const btQuaternion q = tr.getRotation();
+    f.rotation = Eigen::Quaterniond(double(q.w()), double(q.x()), double(q.y()), double(q.z()))
+                     .normalized()
+                     .toRotationMatrix();
+    f.velocity = from_bt(body.rigid->getLinearVelocity());
+    f.angular_velocity = from_bt(body.rigid->getAngularVelocity());
+  } else if (body.motion) {
+    const RigidPose pose = body.motion->pose(t);
+    const RigidVelocity v = body.motion->velocity(t);
+    f.origin = body.origin0 + pose.position;
+    f.rotation = pose.orientation.toRotationMatrix();
+    f.velocity = v.linear;
+    f.angular_velocity = v.angular;
+  } else {
+    f.origin = body.origin0;
+  }
+  return f;
 }
 
 void RigidBodySystem::update_kinematic(double t, double dt) {
@@ -154,30 +187,12 @@ void RigidBodySystem::update_kinematic(double t, double dt) {
 
 void RigidBodySystem::place_particles(World& world, double dt) {
   const double t = world.time();
-  std::vector<Frame> frames(bodies_.size());
+  std::vector<BodyFrame> frames(bodies_.size());
   std::vector<char> moves(bodies_.size(), 0);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
-    Frame& f = frames[b];
-    if (body.source.kind == BodyKind::Dynamic) {
-      const btTransform& tr = body.rigid->getCenterOfMassTransform();
-      f.origin = from_bt(tr.getOrigin());
-      const btQuaternion q = tr.getRotation();
-      f.rotation = Eigen::Quaterniond(double(q.w()), double(q.x()), double(q.y()), double(q.z()))
-                       .normalized()
-                       .toRotationMatrix();
-      f.velocity = from_bt(body.rigid->getLinearVelocity());
-      f.angular_velocity = from_bt(body.rigid->getAngularVelocity());
-      moves[b] = 1;
-    } else if (body.motion) {
-      const RigidPose pose = body.motion->pose(t);
-      const RigidVelocity v = body.motion->velocity(t);
-      f.origin = body.origin0 + pose.position;
-      f.rotation = pose.orientation.toRotationMatrix();
-      f.velocity = v.linear;
-      f.angular_velocity = v.angular;
-      moves[b] = body.motion->moves() ? 1 : 0;
-    }
+    frames[b] = frame_of(body, t);
+    moves[b] = body.source.kind == BodyKind::Dynamic || (body.motion && body.motion->moves());
   }
   update_kinematic(t, dt);
 
@@ -189,7 +204,7 @@ void RigidBodySystem::place_particles(World& world, double dt) {
   world.executor().for_each(p.size(), [&](std::size_t i) {
     const BodyId b = body[i];
     if (b == kNoBody || !moves[std::size_t(b)]) return;
-    const Frame& f = frames[std::size_t(b)];
+    const BodyFrame& f = frames[std::size_t(b)];
     const Eigen::Vector3d r = f.rotation * to_eigen(local[i]);
     x[i] = to_vec3(f.origin + r);
     v[i] = to_vec3(f.velocity + f.angular_velocity.cross(r));
@@ -223,7 +238,25 @@ void RigidBodySystem::advance(World& world, double dt) {
   }
   bullet_->step(dt);
   time_ = world.time() + dt;
+  const std::vector<Eigen::Vector3d> stopped = guard_surfaces(world, time_, dt);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) bodies_[b].state.fluid_force += stopped[b];
   read_states();
+}
+
+std::vector<Eigen::Vector3d> RigidBodySystem::guard_surfaces(World& world, double t, double dt) {
+  std::vector<BodyFrame> frames(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) frames[b] = frame_of(bodies_[b], t);
+  std::vector<Eigen::Vector3d> mean_force(bodies_.size(), Eigen::Vector3d::Zero());
+  // The impulses change the bodies' velocities now, after Bullet's step: the stopped fluid's
+  // momentum goes to the body in the same step, in particle order.
+  for (const SurfaceImpulse& s : guard_.apply(world, frames, guarded_meshes_)) {
+    Body& body = bodies_[s.body];
+    mean_force[s.body] += s.impulse / dt;
+    if (body.source.kind != BodyKind::Dynamic) continue;
+    body.rigid->applyImpulse(upf::to_bt(s.impulse),
+                             upf::to_bt(s.point - from_bt(body.rigid->getCenterOfMassPosition())));
+  }
+  return mean_force;
 }
 
 void RigidBodySystem::read_states() {

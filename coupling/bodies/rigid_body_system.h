@@ -25,6 +25,7 @@
 #include "coupling/bodies/body_source.h"
 #include "coupling/bodies/bullet_world.h"
 #include "coupling/bodies/collision_shapes.h"
+#include "coupling/bodies/penetration_guard.h"
 #include "coupling/motion/prescribed_motion.h"
 #include "framework/scene/scene.h"
 #include "framework/world/body_system.h"
@@ -57,7 +58,8 @@ class RigidBodySystem : public BodySystem {
     Eigen::Vector3d origin0 = Eigen::Vector3d::Zero();              // initial frame origin
     Eigen::Quaterniond rotation0 = Eigen::Quaterniond::Identity();  // initial frame axes
     std::vector<Eigen::Vector3d> local_vertices;                    // mesh in the body frame
-    double reach = 0;  // largest distance of a vertex from the frame origin
+    std::unique_ptr<MeshInsideTest> inside;  // closed meshes, in the body frame: guarded
+    double reach = 0;                        // largest distance of a vertex from the frame origin
     OwnedShape shape;
     std::unique_ptr<btRigidBody> rigid;
     BodyState state;
@@ -85,15 +87,23 @@ class RigidBodySystem : public BodySystem {
   const BodyState& state(std::size_t b) const { return bodies_[b].state; }
   // Momentum of the dynamic bodies, kg m/s.
   Eigen::Vector3d momentum() const;
+  // Fluid particles the penetration guard moved in the last step.
+  std::size_t guarded_particles() const { return guard_.corrected(); }
 
  private:
   void read_states();
   void update_kinematic(double t, double dt);
+  // Where body b stands at time t (a dynamic body: where Bullet has it now).
+  BodyFrame frame_of(const Body& body, double t) const;
+  // Stops fluid particles at the bodies' surfaces; returns the impulses' mean force per body.
+  std::vector<Eigen::Vector3d> guard_surfaces(World& world, double t, double dt);
 
   std::vector<Body> bodies_;
   std::vector<StaticWall> walls_;
   double spacing_;
   std::unique_ptr<BulletWorld> bullet_;
+  PenetrationGuard guard_;
+  std::vector<const MeshInsideTest*> guarded_meshes_;  // per body; null: not guarded
   double time_ = 0;
   std::ofstream csv_;
   std::filesystem::path csv_path_;

@@ -78,6 +78,10 @@ std::vector<Vec3>* Particles::find_vector(const std::string& name) {
 }
 
 void Particles::permute(const std::vector<std::uint32_t>& order) {
+  take(order);
+}
+
+void Particles::take(const std::vector<std::uint32_t>& order) {
   apply_order(position, order, permute_scratch_);
   apply_order(velocity, order, permute_scratch_);
   apply_order(mass, order, permute_scratch_);
@@ -88,6 +92,29 @@ void Particles::permute(const std::vector<std::uint32_t>& order) {
   apply_order(boundary_volume, order, permute_scratch_);
   for (auto& [name, f] : scalars_) apply_order(f.values, order, permute_scratch_);
   for (auto& [name, f] : vectors_) apply_order(f.values, order, permute_scratch_);
+}
+
+std::size_t Particles::remove(const std::vector<std::uint8_t>& doomed) {
+  std::vector<std::uint32_t> kept;
+  kept.reserve(size());
+  for (std::size_t i = 0; i < size(); ++i)
+    if (!doomed[i]) kept.push_back(std::uint32_t(i));
+  const std::size_t removed = size() - kept.size();
+  if (removed == 0) return 0;
+  // take() fills the first kept.size() slots; the rest are cut off.
+  take(kept);
+  const std::size_t n = kept.size();
+  position.resize(n);
+  velocity.resize(n);
+  mass.resize(n);
+  type.resize(n);
+  material.resize(n);
+  id.resize(n);
+  body.resize(n);
+  boundary_volume.resize(n);
+  for (auto& [name, f] : scalars_) f.values.resize(n);
+  for (auto& [name, f] : vectors_) f.values.resize(n);
+  return removed;
 }
 
 void Particles::snapshot_into(Particles& into) const {

@@ -60,6 +60,9 @@ class Particles {
 
   // Reorders every array: new[i] = old[order[i]]. `order` must be a permutation of size().
   void permute(const std::vector<std::uint32_t>& order);
+  // Removes the particles i with doomed[i] != 0 (doomed.size() == size()), keeping the order
+  // and the ids of the others. Returns how many went.
+  std::size_t remove(const std::vector<std::uint8_t>& doomed);
 
   // Copies positions, velocities and exported fields into `into` (reusing its storage), so the
   // last good state can be written after an instability.
@@ -69,6 +72,9 @@ class Particles {
   ParticleId id_bound() const { return next_id_; }
 
  private:
+  // new[i] = old[order[i]] for i < order.size() in every array, sizes unchanged.
+  void take(const std::vector<std::uint32_t>& order);
+
   std::map<std::string, Field<Real>> scalars_;
   std::map<std::string, Field<Vec3>> vectors_;
   ParticleId next_id_ = 0;

@@ -251,3 +251,32 @@ TEST(Particles, SnapshotIntoTheSameTargetFollowsTheSource) {
 
 }  // namespace
 }  // namespace upf
+
+namespace upf {
+namespace {
+
+TEST(Particles, RemoveKeepsOrderIdsAndNamedFieldsOfTheRest) {
+  Particles p;
+  std::vector<Real>& s = p.scalar_field("test.s");
+  for (int k = 0; k < 10; ++k) {
+    p.add(Vec3{Real(k), 0, 0}, {}, Real(1), k % 2 ? ParticleType::Liquid : ParticleType::Frozen, 0);
+    s[std::size_t(k)] = Real(10 * k);
+  }
+  std::vector<std::uint8_t> doomed(10, 0);
+  doomed[0] = doomed[3] = doomed[9] = 1;
+  EXPECT_EQ(p.remove(doomed), 3u);
+  ASSERT_EQ(p.size(), 7u);
+  const std::vector<ParticleId> ids = {1, 2, 4, 5, 6, 7, 8};
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    EXPECT_EQ(p.id[i], ids[i]);
+    EXPECT_EQ(p.position[i].x, Real(ids[i]));
+    EXPECT_EQ((*p.find_scalar("test.s"))[i], Real(10 * ids[i]));
+  }
+  EXPECT_EQ(p.body.size(), 7u);
+  EXPECT_EQ(p.boundary_volume.size(), 7u);
+  // New particles keep counting ids from where they were.
+  EXPECT_EQ(p.id[p.add({}, {}, Real(1), ParticleType::Liquid, 0)], 10u);
+}
+
+}  // namespace
+}  // namespace upf
