@@ -24,6 +24,16 @@ class Bodies : public Cli {
   }
 };
 
+// The shipped body samples load, and every mesh in them is found, measured and sampled.
+TEST(BodySamples, ValidateCleanly) {
+  for (const char* name :
+       {"floating_objects.json", "mesh_splash.json", "dam_break_obstacles.json"}) {
+    const Result r = run_upf("validate " + std::string(UPF_SOURCE_DIR) + "/samples/" + name);
+    EXPECT_EQ(r.code, 0) << name << ": " << r.output;
+    EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
+  }
+}
+
 TEST_F(Bodies, MissingMeshFileIsBadInputNamingTheFile) {
   expect_rejected(with_body(kMeshes + "no_such_mesh.obj"), {"/bodies/0/mesh", "no_such_mesh.obj"});
 }
