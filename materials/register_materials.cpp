@@ -2,6 +2,7 @@
 
 #include "framework/solver/registry.h"
 #include "materials/frozen.h"
+#include "materials/granular.h"
 #include "materials/liquid.h"
 #include "materials/rigid.h"
 
@@ -11,6 +12,7 @@ void register_materials(Registry& registry) {
   registry.add_material_kind(liquid_material_kind());
   registry.add_material_kind(frozen_material_kind());
   registry.add_material_kind(rigid_material_kind());
+  registry.add_material_kind(granular_material_kind());
 }
 
 }  // namespace upf

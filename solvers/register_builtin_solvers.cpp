@@ -1,6 +1,7 @@
 #include "solvers/register_builtin_solvers.h"
 
 #include "materials/register_materials.h"
+#include "solvers/dem/register_dem.h"
 #include "solvers/pcisph/register_pcisph.h"
 #include "solvers/sph/register_sph.h"
 #include "solvers/wcsph/register_wcsph.h"
@@ -12,6 +13,7 @@ void register_builtins(Registry& registry) {
   register_pcisph(registry);
   register_sph(registry);
   register_wcsph(registry);
+  register_dem(registry);
 }
 
 }  // namespace upf

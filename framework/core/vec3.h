@@ -59,6 +59,9 @@ UPF_HD constexpr bool operator==(const Vec3& a, const Vec3& b) {
 UPF_HD constexpr Real dot(const Vec3& a, const Vec3& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+UPF_HD constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 UPF_HD constexpr Real squared_norm(const Vec3& a) {
   return dot(a, a);
 }

@@ -314,8 +314,6 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
     }
     if (mat_ok) scene.fluid_blocks.push_back(desc);
   });
-  if (scene.fluid_blocks.empty() && problems.empty())
-    in.problem("/fluid_blocks", "the scene has no fluid block: nothing would move");
 
   // Output.
   if (auto it = doc.find("output"); it != doc.end() && in.expect_object(*it, "/output")) {
@@ -366,6 +364,12 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
     auto data = section.read(*it, "/" + section.key, scene, in);
     if (data) scene.sections.push_back({section.key, std::move(data)});
   }
+  // Something must move: liquid, or what a plug-in section adds (grains, bodies).
+  bool moving_sections = false;
+  for (const auto& section : scene.sections)
+    moving_sections = moving_sections || section.data->estimated_particles() > 0;
+  if (scene.fluid_blocks.empty() && !moving_sections && problems.empty())
+    in.problem("/fluid_blocks", "the scene has no fluid block: nothing would move");
 
   // Probes.
   in.for_each_object(doc, "", "probes", [&](const json& probe, const std::string& path) {

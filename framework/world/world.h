@@ -19,6 +19,7 @@
 #include "framework/particles/particles.h"
 #include "framework/solver/solver.h"
 #include "framework/world/body_system.h"
+#include "framework/world/container_box.h"
 #include "framework/world/world_settings.h"
 
 namespace upf {
@@ -47,6 +48,8 @@ class World {
   const std::vector<std::unique_ptr<Solver>>& solvers() const { return solvers_; }
   void add_body_system(std::unique_ptr<BodySystem> system);
   const std::vector<std::unique_ptr<BodySystem>>& body_systems() const { return bodies_; }
+  void add_container(const ContainerBox& box) { containers_.push_back(box); }
+  const std::vector<ContainerBox>& containers() const { return containers_; }
 
   // Asks for neighbour lists (query types -> target types within the support radius), rebuilt
   // every step. Call from Solver::prepare; returns a handle for neighbours().
@@ -89,6 +92,7 @@ class World {
   std::vector<ListRequest> lists_;
   std::vector<std::unique_ptr<Solver>> solvers_;
   std::vector<std::unique_ptr<BodySystem>> bodies_;
+  std::vector<ContainerBox> containers_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   bool prepared_ = false;

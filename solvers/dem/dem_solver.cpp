@@ -1,0 +1,228 @@
+#include "solvers/dem/dem_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "framework/core/stopwatch.h"
+#include "framework/world/world.h"
+
+namespace upf {
+
+namespace {
+
+constexpr TypeMask kGranularMask = mask_of(ParticleType::Granular);
+
+// The moment of inertia of a solid sphere over its mass and radius squared.
+constexpr Real kSphereInertia = Real(0.4);
+
+}  // namespace
+
+std::vector<ParamSpec> DemSolver::param_specs() {
+  return {
+      {"substep_fraction", "1", 0.05, 1e-4, 0.5,
+       "DEM sub-step as a fraction of the shortest contact time (linear: the contact time; "
+       "Hertz: the Rayleigh time)"},
+  };
+}
+
+DemSolver::DemSolver(DemModel model, const ParamValues& params, std::vector<MaterialId> materials)
+    : model_(model),
+      substep_fraction_(params.get("substep_fraction")),
+      materials_(std::move(materials)) {}
+
+void DemSolver::prepare(World& world) {
+  Particles& p = world.particles();
+  mine_.assign(world.materials().size(), 0);
+  for (MaterialId m : materials_) mine_[m] = 1;
+  pairs_ = std::make_unique<DemPairs>(world.materials(), world.settings().spacing);
+  substep_ = Real(substep_fraction_) * pairs_->shortest_contact_time(model_);
+
+  std::vector<Real>& radius = p.scalar_field(kRadiusField, 0, true);
+  p.vector_field(kAngularVelocityField, {}, true);
+  p.vector_field(kForceField);
+  p.vector_field(kTorqueField);
+  primed_ = false;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.type[i] == ParticleType::Granular) radius[i] = pairs_->grain(p.material[i]).radius;
+  history_.reset(p);
+  grains_list_ = world.request_neighbours(kGranularMask, kGranularMask | kBoundaryMask);
+  if (p.find_vector(kBoundaryForceField) && p.count(ParticleType::Rigid) > 0)
+    reaction_list_ = world.request_neighbours(mask_of(ParticleType::Rigid), kGranularMask);
+}
+
+Real DemSolver::max_time_step(const World& world) const {
+  // Neighbour lists reach one support radius; a grain's contacts reach at most its diameter (or
+  // radius plus a boundary particle's), so over a world step a pair may close in by less than
+  // the difference: 0.4 spacings at the CFL number 0.4 on the fastest grain.
+  const Particles& p = world.particles();
+  Real fastest = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.type[i] == ParticleType::Granular && mine_[p.material[i]])
+      fastest = std::max(fastest, norm(p.velocity[i]));
+  if (fastest <= 0) return std::numeric_limits<Real>::max();
+  return Real(world.settings().time.cfl) * world.settings().spacing / fastest;
+}
+
+void DemSolver::step(World& world, Real dt) {
+  Stopwatch watch;
+  stats_ = SolverStats{};
+  const int n = std::max(1, int(std::ceil(double(dt) / double(substep_) - 1e-9)));
+  h_ = dt / Real(n);
+  overflow_.assign(world.particles().size(), 0);
+  double contacts_ms = 0, integrate_ms = 0;
+  // Velocity Verlet (as in LIGGGHTS): kick half, drift, forces at the new positions with the
+  // half-step velocities, kick half. The forces are kept in particle fields, so they follow the
+  // particles through reordering; the first step computes them first.
+  if (!primed_) {
+    substep_forces(world, 0);
+    primed_ = true;
+  }
+  for (int k = 0; k < n; ++k) {
+    kick(world, Real(0.5) * h_);
+    drift(world, h_);
+    integrate_ms += watch.lap_ms();
+    substep_forces(world, Real(k + 1) * h_);
+    if (reaction_list_ >= 0) substep_reactions(world, h_ / dt);
+    history_.swap();
+    contacts_ms += watch.lap_ms();
+    kick(world, Real(0.5) * h_);
+    integrate_ms += watch.lap_ms();
+  }
+  for (std::uint8_t o : overflow_) dropped_ += o;
+  stats_.iterations = n;
+  stats_.stage_ms = {{"dem_contacts", contacts_ms}, {"dem_integration", integrate_ms}};
+}
+
+void DemSolver::substep_forces(World& world, Real t_in_step) {
+  Particles& p = world.particles();
+  const NeighbourList& list = world.neighbours(grains_list_);
+  const Vec3* x = p.position.data();
+  const Vec3* v = p.velocity.data();
+  const Real* m = p.mass.data();
+  const ParticleType* type = p.type.data();
+  const MaterialId* mat = p.material.data();
+  const ParticleId* id = p.id.data();
+  const BodyId* body = p.body.data();
+  const Real* radius = p.find_scalar(kRadiusField)->data();
+  const Vec3* w = p.find_vector(kAngularVelocityField)->data();
+  const Vec3 g = world.settings().gravity;
+  const std::vector<ContainerBox>& boxes = world.containers();
+  const Real rb = pairs_->boundary_radius();
+  const Real h = h_;
+  Vec3* force = p.find_vector(kForceField)->data();
+  Vec3* torque = p.find_vector(kTorqueField)->data();
+
+  world.executor().for_each(p.size(), [&](std::size_t i) {
+    if (type[i] != ParticleType::Granular || !mine_[mat[i]]) return;
+    const ParticleId me = id[i];
+    const Real ri = radius[i];
+    Vec3 f = g * m[i];
+    Vec3 tau{};
+    history_.begin(me);
+    auto contact = [&](std::uint32_t key, const DemPairParams& pp, Real overlap, const Vec3& n,
+                       const Vec3& v_rel, const Vec3& w_rel) {
+      const DemContactForce c =
+          dem_contact_force(model_, pp, overlap, n, v_rel, history_.old_xi(me, key), h);
+      f += c.force;
+      // The tangential force acts at the contact point, -R_i n from the centre.
+      tau += cross(n * (-ri), c.force - n * dot(c.force, n));
+      tau += dem_rolling_torque(pp, c.normal, w_rel);
+      if (!history_.record(me, {key, c.xi, c.force})) overflow_[i] = 1;
+    };
+
+    // Container walls: the inner faces of every box the grain is in.
+    for (std::size_t b = 0; b < boxes.size(); ++b) {
+      const ContainerBox& box = boxes[b];
+      bool inside = true;
+      for (int a = 0; a < 3; ++a)
+        inside = inside && x[i][a] > box.min[a] - ri && x[i][a] < box.max[a] + ri;
+      if (!inside) continue;
+      for (int face = 0; face < 6; ++face) {
+        const int a = face / 2;
+        const bool lower = face % 2 == 0;
+        const Real gap = lower ? x[i][a] - box.min[a] : box.max[a] - x[i][a];
+        const Real overlap = ri - gap;
+        if (overlap <= 0) continue;
+        Vec3 n{};
+        n[a] = lower ? Real(1) : Real(-1);
+        const Vec3 v_rel = v[i] - cross(w[i] * ri, n);
+        contact(dem_wall_key(b, face), pairs_->wall(mat[i]), overlap, n, v_rel, w[i]);
+      }
+    }
+
+    for (std::uint32_t k = list.offsets[i]; k < list.offsets[i + 1]; ++k) {
+      const std::uint32_t j = list.indices[k];
+      if (type[j] == ParticleType::Granular) {
+        const Vec3 d = x[i] - x[j];
+        const Real dist = norm(d);
+        const Real overlap = ri + radius[j] - dist;
+        if (overlap <= 0 || dist <= 0) continue;
+        const Vec3 n = d / dist;
+        const Vec3 v_rel = v[i] - v[j] - cross(w[i] * ri + w[j] * radius[j], n);
+        contact(id[j], pairs_->pair(mat[i], mat[j]), overlap, n, v_rel, w[i] - w[j]);
+      } else if (body[j] != kNoBody) {
+        // A body's boundary particle, moving on at its step-start velocity.
+        const Vec3 d = x[i] - (x[j] + v[j] * t_in_step);
+        const Real dist = norm(d);
+        const Real overlap = ri + rb - dist;
+        if (overlap <= 0 || dist <= 0) continue;
+        const Vec3 n = d / dist;
+        const Vec3 v_rel = v[i] - v[j] - cross(w[i] * ri, n);
+        contact(id[j], pairs_->boundary(mat[i]), overlap, n, v_rel, w[i]);
+      }
+    }
+    force[i] = f;
+    torque[i] = tau;
+  });
+}
+
+void DemSolver::substep_reactions(World& world, Real weight) {
+  Particles& p = world.particles();
+  const NeighbourList& list = world.neighbours(reaction_list_);
+  Vec3* reaction = p.find_vector(kBoundaryForceField)->data();
+  const ParticleType* type = p.type.data();
+  const MaterialId* mat = p.material.data();
+  const ParticleId* id = p.id.data();
+  world.executor().for_each(p.size(), [&](std::size_t b) {
+    if (type[b] != ParticleType::Rigid) return;
+    Vec3 sum{};
+    for (std::uint32_t k = list.offsets[b]; k < list.offsets[b + 1]; ++k) {
+      const std::uint32_t g = list.indices[k];
+      if (!mine_[mat[g]]) continue;
+      sum -= history_.new_force(id[g], id[b]);
+    }
+    reaction[b] += sum * weight;
+  });
+}
+
+void DemSolver::kick(World& world, Real h) {
+  Particles& p = world.particles();
+  Vec3* v = p.velocity.data();
+  Vec3* w = p.vector_field(kAngularVelocityField).data();
+  const Vec3* f = p.find_vector(kForceField)->data();
+  const Vec3* tau = p.find_vector(kTorqueField)->data();
+  const Real* m = p.mass.data();
+  const Real* radius = p.find_scalar(kRadiusField)->data();
+  const ParticleType* type = p.type.data();
+  const MaterialId* mat = p.material.data();
+  world.executor().for_each(p.size(), [&](std::size_t i) {
+    if (type[i] != ParticleType::Granular || !mine_[mat[i]]) return;
+    v[i] += f[i] * (h / m[i]);
+    w[i] += tau[i] * (h / (kSphereInertia * m[i] * radius[i] * radius[i]));
+  });
+}
+
+void DemSolver::drift(World& world, Real h) {
+  Particles& p = world.particles();
+  Vec3* x = p.position.data();
+  const Vec3* v = p.velocity.data();
+  const ParticleType* type = p.type.data();
+  const MaterialId* mat = p.material.data();
+  world.executor().for_each(p.size(), [&](std::size_t i) {
+    if (type[i] != ParticleType::Granular || !mine_[mat[i]]) return;
+    x[i] += v[i] * h;
+  });
+}
+
+}  // namespace upf
