@@ -14,6 +14,9 @@ MaterialKind liquid_material_kind() {
            "damps the flow, so it is larger than water's 1e-6 at coarse resolution"},
           {"boundary_viscosity", "m^2/s", 0, 0, 10,
            "kinematic viscosity against boundary particles (wall friction)"},
+          {"drag_viscosity", "Pa s", 1e-3, 1e-6, 1e3,
+           "the liquid's physical dynamic viscosity mu, for the drag on grains (Di Felice "
+           "1994); the SPH viscosity above is a numerical one"},
       },
       "pcisph",
   };

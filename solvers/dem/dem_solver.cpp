@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "framework/core/stopwatch.h"
+#include "framework/world/coupling_fields.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -49,6 +50,19 @@ void DemSolver::prepare(World& world) {
   grains_list_ = world.request_neighbours(kGranularMask, kGranularMask | kBoundaryMask);
   if (p.find_vector(kBoundaryForceField) && p.count(ParticleType::Rigid) > 0)
     reaction_list_ = world.request_neighbours(mask_of(ParticleType::Rigid), kGranularMask);
+  if (p.count(ParticleType::Liquid) > 0) {
+    grain_liquid_list_ = world.request_neighbours(kGranularMask, kLiquidMask);
+    liquid_grain_list_ = world.request_neighbours(kLiquidMask, kGranularMask);
+    p.vector_field(kLiquidCouplingForceField);
+    const MaterialTable& mats = world.materials();
+    liquid_density_.assign(mats.size(), 0);
+    liquid_viscosity_.assign(mats.size(), 0);
+    for (std::size_t m = 0; m < mats.size(); ++m)
+      if (mats[MaterialId(m)].type == ParticleType::Liquid) {
+        liquid_density_[m] = Real(mats[MaterialId(m)].param("density"));
+        liquid_viscosity_[m] = Real(mats[MaterialId(m)].param("drag_viscosity"));
+      }
+  }
 }
 
 Real DemSolver::max_time_step(const World& world) const {
@@ -74,27 +88,103 @@ void DemSolver::step(World& world, Real dt) {
   // Velocity Verlet (as in LIGGGHTS): kick half, drift, forces at the new positions with the
   // half-step velocities, kick half. The forces are kept in particle fields, so they follow the
   // particles through reordering; the first step computes them first.
+  const bool liquid = grain_liquid_list_ >= 0;
+  if (liquid) interpolate_fluid(world);
   if (!primed_) {
-    substep_forces(world, 0);
+    substep_forces(world, 0, 0);
     primed_ = true;
   }
   for (int k = 0; k < n; ++k) {
     kick(world, Real(0.5) * h_);
     drift(world, h_);
     integrate_ms += watch.lap_ms();
-    substep_forces(world, Real(k + 1) * h_);
+    substep_forces(world, Real(k + 1) * h_, h_ / dt);
     if (reaction_list_ >= 0) substep_reactions(world, h_ / dt);
     history_.swap();
     contacts_ms += watch.lap_ms();
     kick(world, Real(0.5) * h_);
     integrate_ms += watch.lap_ms();
   }
+  if (liquid) liquid_reactions(world);
   for (std::uint8_t o : overflow_) dropped_ += o;
   stats_.iterations = n;
   stats_.stage_ms = {{"dem_contacts", contacts_ms}, {"dem_integration", integrate_ms}};
 }
 
-void DemSolver::substep_forces(World& world, Real t_in_step) {
+void DemSolver::interpolate_fluid(World& world) {
+  const Particles& p = world.particles();
+  const NeighbourList& liquid = world.neighbours(grain_liquid_list_);
+  const NeighbourList& grains = world.neighbours(grains_list_);
+  const CubicSplineKernel kernel = world.kernel();
+  const Vec3* x = p.position.data();
+  const Vec3* v = p.velocity.data();
+  const Real* m = p.mass.data();
+  const ParticleType* type = p.type.data();
+  const MaterialId* mat = p.material.data();
+  const Real* radius = p.find_scalar(kRadiusField)->data();
+  fluid_.assign(p.size(), GrainFluidState{});
+  fluid_weight_sum_.assign(p.size(), 0);
+  fluid_force_.assign(p.size(), Vec3{});
+  start_position_.assign(p.position.begin(), p.position.end());
+  constexpr Real kBallVolume = Real(4.0 / 3.0 * 3.14159265358979323846);
+  world.executor().for_each(p.size(), [&](std::size_t i) {
+    if (type[i] != ParticleType::Granular || !mine_[mat[i]]) return;
+    // Fluid fraction, velocity, density and viscosity: Shepard averages over the liquid.
+    Real phi = 0, rho = 0, mu = 0;
+    Vec3 u{};
+    for (std::uint32_t k = liquid.offsets[i]; k < liquid.offsets[i + 1]; ++k) {
+      const std::uint32_t j = liquid.indices[k];
+      const Real rho0 = liquid_density_[mat[j]];
+      const Real w = m[j] / rho0 * kernel.value(x[i] - x[j]);
+      phi += w;
+      u += v[j] * w;
+      rho += rho0 * w;
+      mu += liquid_viscosity_[mat[j]] * w;
+    }
+    fluid_weight_sum_[i] = phi;
+    if (phi <= 0) return;
+    // Voidage: one minus the grains' volume fraction, this grain included.
+    Real solid = kBallVolume * radius[i] * radius[i] * radius[i] * kernel.value(Real(0));
+    for (std::uint32_t k = grains.offsets[i]; k < grains.offsets[i + 1]; ++k) {
+      const std::uint32_t j = grains.indices[k];
+      if (type[j] != ParticleType::Granular) continue;
+      solid += kBallVolume * radius[j] * radius[j] * radius[j] * kernel.value(x[i] - x[j]);
+    }
+    GrainFluidState& s = fluid_[i];
+    s.fluid_velocity = u / phi;
+    s.fluid_density = rho / phi;
+    s.fluid_viscosity = mu / phi;
+    s.fluid_fraction = std::min(phi, Real(1));
+    s.voidage = std::clamp(Real(1) - solid, Real(0.1), Real(1));
+  });
+}
+
+void DemSolver::liquid_reactions(World& world) {
+  Particles& p = world.particles();
+  const NeighbourList& grains = world.neighbours(liquid_grain_list_);
+  const CubicSplineKernel kernel = world.kernel();
+  // Weights at the step-start positions, the ones fluid_weight_sum_ was made with.
+  const Vec3* x = start_position_.data();
+  const Real* m = p.mass.data();
+  const ParticleType* type = p.type.data();
+  const MaterialId* mat = p.material.data();
+  Vec3* out = p.find_vector(kLiquidCouplingForceField)->data();
+  // Each grain's force is shared among its liquid neighbours by their Shepard weights, which
+  // sum to one: the liquid gets exactly the opposite of what the grains got.
+  world.executor().for_each(p.size(), [&](std::size_t j) {
+    if (type[j] != ParticleType::Liquid) return;
+    Vec3 f{};
+    const Real vj = m[j] / liquid_density_[mat[j]];
+    for (std::uint32_t k = grains.offsets[j]; k < grains.offsets[j + 1]; ++k) {
+      const std::uint32_t i = grains.indices[k];
+      if (!mine_[mat[i]] || fluid_weight_sum_[i] <= 0) continue;
+      f -= fluid_force_[i] * (vj * kernel.value(x[j] - x[i]) / fluid_weight_sum_[i]);
+    }
+    out[j] = f;
+  });
+}
+
+void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) {
   Particles& p = world.particles();
   const NeighbourList& list = world.neighbours(grains_list_);
   const Vec3* x = p.position.data();
@@ -171,6 +261,12 @@ void DemSolver::substep_forces(World& world, Real t_in_step) {
         const Vec3 v_rel = v[i] - v[j] - cross(w[i] * ri, n);
         contact(id[j], pairs_->boundary(mat[i]), overlap, n, v_rel, w[i]);
       }
+    }
+    if (!fluid_.empty() && fluid_[i].fluid_fraction > 0) {
+      const Real volume = Real(4.0 / 3.0 * 3.14159265358979323846) * ri * ri * ri;
+      const Vec3 fluid = di_felice_drag(fluid_[i], ri, v[i]) + grain_buoyancy(fluid_[i], volume, g);
+      f += fluid;
+      fluid_force_[i] += fluid * fluid_weight;
     }
     force[i] = f;
     torque[i] = tau;

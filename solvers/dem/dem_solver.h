@@ -9,6 +9,10 @@
 // averaged over the sub-steps, and from there through the same per-body sum as the fluid
 // coupling into Bullet. Bodies move at their step-start velocity during the sub-steps.
 //
+// Grains in a liquid feel drag (Di Felice 1994) and buoyancy (dem_fluid_drag.h) from the liquid
+// interpolated around them at the step's start; the liquid neighbours gather the opposite force,
+// averaged over the sub-steps, through kLiquidCouplingForceField, so momentum is conserved.
+//
 // Determinism: each grain gathers its own contacts (pairs are computed from both sides with
 // forces that are exact opposites) and keeps its own contact history; a boundary particle reads
 // the forces back from its grains' histories. No atomics, no scatter.
@@ -22,6 +26,7 @@
 #include "framework/solver/solver.h"
 #include "solvers/dem/dem_contact.h"
 #include "solvers/dem/dem_contact_history.h"
+#include "solvers/dem/dem_fluid_drag.h"
 #include "solvers/dem/dem_pairs.h"
 
 namespace upf {
@@ -50,7 +55,11 @@ class DemSolver : public Solver {
   std::size_t dropped_contacts() const { return dropped_; }
 
  private:
-  void substep_forces(World& world, Real t_in_step);
+  // Contact, gravity and fluid forces at the current state; the fluid force is added to the
+  // step's average with weight `fluid_weight`.
+  void substep_forces(World& world, Real t_in_step, Real fluid_weight);
+  void interpolate_fluid(World& world);
+  void liquid_reactions(World& world);
   void substep_reactions(World& world, Real weight);
   void kick(World& world, Real h);   // v += F h / m, w += tau h / I
   void drift(World& world, Real h);  // x += v h
@@ -64,6 +73,13 @@ class DemSolver : public Solver {
   int grains_list_ = -1, reaction_list_ = -1;
   Real substep_ = 0, h_ = 0;
   bool primed_ = false;  // forces computed for the current positions
+  // Grain-liquid coupling (when the scene has liquid).
+  int grain_liquid_list_ = -1, liquid_grain_list_ = -1;
+  std::vector<Real> liquid_density_, liquid_viscosity_;  // by material
+  std::vector<GrainFluidState> fluid_;                   // by particle, this step
+  std::vector<Real> fluid_weight_sum_;                   // sum_j V_j W_ij, by particle
+  std::vector<Vec3> start_position_;                     // grains at the step's start
+  std::vector<Vec3> fluid_force_;                        // step average, by particle
   std::vector<std::uint8_t> overflow_;
   std::size_t dropped_ = 0;
   SolverStats stats_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "framework/world/coupling_fields.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_forces.h"
 
@@ -43,6 +44,11 @@ void FluidSolverState::shared_forces(const World& world, const FluidView& f, Rea
   owned.for_each(exec, [&](std::uint32_t i) {
     a_other[i] = g + viscosity_acceleration(f, density, gradient, i);
   });
+  if (const std::vector<Vec3>* coupling =
+          world.particles().find_vector(kLiquidCouplingForceField)) {
+    const Vec3* force = coupling->data();
+    owned.for_each(exec, [&](std::uint32_t i) { a_other[i] += force[i] / f.mass[i]; });
+  }
 }
 
 void FluidSolverState::integrate(World& world, Real dt) const {
