@@ -28,6 +28,7 @@ asan: deps
 
 bench: build
 	./build/release/bench/bench_dam_break
+	./build/release/bench/bench_column_collapse
 
 clean:
 	rm -rf build out

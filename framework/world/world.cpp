@@ -22,14 +22,16 @@ void World::add_body_system(std::unique_ptr<BodySystem> system) {
   bodies_.push_back(std::move(system));
 }
 
-int World::request_neighbours(TypeMask query, TypeMask target) {
+int World::request_neighbours(TypeMask query, TypeMask target, Real radius) {
+  const Real support = settings_.support_radius();
+  if (!(radius > 0) || radius > support) radius = support;  // the grid's cells cap the reach
   for (std::size_t i = 0; i < lists_.size(); ++i)
-    if (lists_[i].query == query && lists_[i].target == target) return int(i);
-  lists_.push_back({query, target, {}});
+    if (lists_[i].query == query && lists_[i].target == target && lists_[i].radius == radius)
+      return int(i);
+  lists_.push_back({query, target, radius, {}});
   if (prepared_) {
     grid_.build(particles_, executor_);
-    grid_.find_neighbours(particles_, query, target, settings_.support_radius(), executor_,
-                          lists_.back().list);
+    grid_.find_neighbours(particles_, query, target, radius, executor_, lists_.back().list);
   }
   return int(lists_.size() - 1);
 }
@@ -75,13 +77,13 @@ void World::update_neighbours() {
     std::vector<TypeMask> targets;
     std::vector<NeighbourList*> outs;
     for (std::size_t b = a; b < lists_.size(); ++b) {
-      if (done[b] || lists_[b].query != lists_[a].query) continue;
+      if (done[b] || lists_[b].query != lists_[a].query || lists_[b].radius != lists_[a].radius)
+        continue;
       done[b] = true;
       targets.push_back(lists_[b].target);
       outs.push_back(&lists_[b].list);
     }
-    grid_.find_neighbours(particles_, lists_[a].query, targets, settings_.support_radius(),
-                          executor_, outs);
+    grid_.find_neighbours(particles_, lists_[a].query, targets, lists_[a].radius, executor_, outs);
   }
 }
 

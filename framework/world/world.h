@@ -51,9 +51,10 @@ class World {
   void add_container(const ContainerBox& box) { containers_.push_back(box); }
   const std::vector<ContainerBox>& containers() const { return containers_; }
 
-  // Asks for neighbour lists (query types -> target types within the support radius), rebuilt
-  // every step. Call from Solver::prepare; returns a handle for neighbours().
-  int request_neighbours(TypeMask query, TypeMask target);
+  // Asks for neighbour lists (query types -> target types within `radius`, at most and by
+  // default the support radius), rebuilt every step. Call from Solver::prepare; returns a
+  // handle for neighbours().
+  int request_neighbours(TypeMask query, TypeMask target, Real radius = 0);
   const NeighbourList& neighbours(int handle) const { return lists_.at(std::size_t(handle)).list; }
   const NeighbourGrid& grid() const { return grid_; }
 
@@ -78,6 +79,7 @@ class World {
  private:
   struct ListRequest {
     TypeMask query, target;
+    Real radius;
     NeighbourList list;
   };
   void update_neighbours();

@@ -28,6 +28,7 @@
 #include "solvers/dem/dem_contact_history.h"
 #include "solvers/dem/dem_fluid_drag.h"
 #include "solvers/dem/dem_pairs.h"
+#include "solvers/fluid/owned_particles.h"
 
 namespace upf {
 
@@ -61,17 +62,20 @@ class DemSolver : public Solver {
   void interpolate_fluid(World& world);
   void liquid_reactions(World& world);
   void substep_reactions(World& world, Real weight);
-  void kick(World& world, Real h);   // v += F h / m, w += tau h / I
-  void drift(World& world, Real h);  // x += v h
+  // v += F h_kick / m, w += tau h_kick / I, then x += v h_drift.
+  void kick_drift(World& world, Real h_kick, Real h_drift);
 
   DemModel model_;
   double substep_fraction_;
   std::vector<MaterialId> materials_;
-  std::vector<char> mine_;  // by material
+  std::vector<char> mine_;            // by material
+  OwnedParticles owned_;              // my grains, this step
+  std::vector<std::uint32_t> rigid_;  // rigid boundary particles, this step
   std::unique_ptr<DemPairs> pairs_;
   DemContactHistory history_;
   int grains_list_ = -1, reaction_list_ = -1;
   Real substep_ = 0, h_ = 0;
+  Real skin_ = 0;        // m, how far contact lists reach beyond the longest contact
   bool primed_ = false;  // forces computed for the current positions
   // Grain-liquid coupling (when the scene has liquid).
   int grain_liquid_list_ = -1, liquid_grain_list_ = -1;

@@ -11,8 +11,7 @@ void OwnedParticles::set_materials(std::size_t material_count,
 void OwnedParticles::rebuild(const Particles& particles) {
   indices_.clear();
   for (std::size_t i = 0; i < particles.size(); ++i)
-    if (particles.type[i] == ParticleType::Liquid && owns_[particles.material[i]])
-      indices_.push_back(std::uint32_t(i));
+    if (owns_[particles.material[i]]) indices_.push_back(std::uint32_t(i));
 }
 
 }  // namespace upf

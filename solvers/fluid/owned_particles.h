@@ -1,7 +1,7 @@
-// The liquid particles one fluid solver moves, as an index list rebuilt every step (reordering
-// for locality moves them). Loops over the list split evenly between threads; a static split of
-// all particles did not: walls and water sit in different parts of the Morton order, and one
-// thread waited for the other.
+// The particles one solver moves (those of its materials), as an index list rebuilt every step
+// (reordering for locality moves them). Fluid and DEM solvers use it. Loops over the list split
+// evenly between threads; a static split of all particles did not: walls and water sit in different
+// parts of the Morton order, and one thread waited for the other.
 #pragma once
 
 #include <cstddef>
@@ -15,7 +15,7 @@ namespace upf {
 
 class OwnedParticles {
  public:
-  // Owns the liquid particles of `materials`, out of `material_count` materials in the world.
+  // Owns the particles of `materials`, out of `material_count` materials in the world.
   void set_materials(std::size_t material_count, const std::vector<MaterialId>& materials);
   // Collects the owned particles in index order.
   void rebuild(const Particles& particles);
