@@ -24,10 +24,12 @@ class Bodies : public Cli {
   }
 };
 
-// The shipped body samples load, and every mesh in them is found, measured and sampled.
+// The shipped body and granular samples load, and every mesh in them is found, measured and
+// sampled.
 TEST(BodySamples, ValidateCleanly) {
   for (const char* name :
-       {"floating_objects.json", "mesh_splash.json", "dam_break_obstacles.json"}) {
+       {"floating_objects.json", "mesh_splash.json", "dam_break_obstacles.json",
+        "granular_column.json", "sand_pile.json", "silo_discharge.json", "sand_into_water.json"}) {
     const Result r = run_upf("validate " + std::string(UPF_SOURCE_DIR) + "/samples/" + name);
     EXPECT_EQ(r.code, 0) << name << ": " << r.output;
     EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
