@@ -84,18 +84,21 @@ UPF_HD inline DemContactForce dem_contact_force(DemModel model, const DemPairPar
   if (model == DemModel::Hertz && fn < 0) fn = 0;
   fn -= p.cohesion_force;
 
-  // The old displacement, turned into the current tangent plane with its length kept.
-  const Real xi_len = norm(xi);
-  xi = xi - n * dot(xi, n);
-  const Real xi_new_len = norm(xi);
-  if (xi_new_len > 0) xi = xi * (xi_len / xi_new_len);
+  // The old displacement, turned into the current tangent plane with its length kept (one
+  // square root: the ratio of the squared lengths).
+  const Real xi_len2 = squared_norm(xi);
+  if (xi_len2 > 0) {
+    xi = xi - n * dot(xi, n);
+    const Real xi_new_len2 = squared_norm(xi);
+    if (xi_new_len2 > 0) xi = xi * std::sqrt(xi_len2 / xi_new_len2);
+  }
   xi += vt * dt;
   Vec3 ft = -(xi * kt) - vt * ct;
-  const Real ft_len = norm(ft);
+  const Real ft_len2 = squared_norm(ft);
   const Real limit = p.friction * std::abs(fn);
-  if (ft_len > limit) {
+  if (ft_len2 > limit * limit) {
     // Sliding: the force at the Coulomb limit, and the spring that would give it.
-    ft = ft * (ft_len > 0 ? limit / ft_len : Real(0));
+    ft = ft * (limit / std::sqrt(ft_len2));
     xi = kt > 0 ? -(ft + vt * ct) / kt : Vec3{};
   }
   return {n * fn + ft, xi, std::abs(fn)};

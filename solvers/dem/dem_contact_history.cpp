@@ -24,11 +24,16 @@ Vec3 DemContactHistory::old_xi(ParticleId id, std::uint32_t key) const {
 }
 
 Vec3 DemContactHistory::new_force(ParticleId id, std::uint32_t key) const {
+  const DemContactSlot* s = find_new(id, key);
+  return s ? s->force : Vec3{};
+}
+
+const DemContactSlot* DemContactHistory::find_new(ParticleId id, std::uint32_t key) const {
   const std::size_t r = std::size_t(row_[id]);
   const DemContactSlot* s = &new_[r * kSlots];
   for (int k = 0; k < new_count_[r]; ++k)
-    if (s[k].key == key) return s[k].force;
-  return {};
+    if (s[k].key == key) return &s[k];
+  return nullptr;
 }
 
 bool DemContactHistory::record(ParticleId id, const DemContactSlot& slot) {

@@ -1,7 +1,8 @@
 // The tangential springs of the contacts, kept from one sub-step to the next: each grain holds up
-// to kSlots contacts (partner key, displacement xi, last force), found by the partner's stable id
-// so that reordering the particles loses nothing. Two buffers: a sub-step reads the old and
-// writes the new, so grains never see each other's half-updated state.
+// to kSlots contacts (partner key, displacement xi, last force and rolling torque), found by the
+// partner's stable id so that reordering the particles loses nothing. A pair of grains is kept
+// by the grain with the lower id only; the other reads the force back from it. Two buffers: a
+// sub-step reads the old and writes the new, so grains never see each other's half-updated state.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +17,7 @@ struct DemContactSlot {
   std::uint32_t key = 0;  // partner id, or a wall key (dem_wall_key)
   Vec3 xi;                // tangential displacement, m
   Vec3 force;             // on the grain from this partner in the last sub-step, N
+  Vec3 rolling;           // rolling-resistance torque on the grain, N m
 };
 
 // Wall faces are partners too: container c, face f (0..5) gets a key above every particle id.
@@ -35,6 +37,8 @@ class DemContactHistory {
   Vec3 old_xi(ParticleId id, std::uint32_t key) const;
   // The force grain `id` felt from `key` in the sub-step just computed (zero if none).
   Vec3 new_force(ParticleId id, std::uint32_t key) const;
+  // Grain `id`'s contact with `key` in the sub-step just computed, or null.
+  const DemContactSlot* find_new(ParticleId id, std::uint32_t key) const;
   // Starts grain `id`'s new contact list; record() appends (false when the slots are full).
   void begin(ParticleId id) { new_count_[std::size_t(row_[id])] = 0; }
   bool record(ParticleId id, const DemContactSlot& slot);

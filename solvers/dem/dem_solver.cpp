@@ -111,12 +111,14 @@ void DemSolver::step(World& world, Real dt) {
   if (liquid) interpolate_fluid(world);
   if (!primed_) {
     substep_forces(world, 0, 0);
+    gather_pairs(world);
     primed_ = true;
   }
   for (int k = 0; k < n; ++k) {
     kick_drift(world, Real(0.5) * h_, h_);
     integrate_ms += watch.lap_ms();
     substep_forces(world, Real(k + 1) * h_, h_ / dt);
+    gather_pairs(world);
     if (reaction_list_ >= 0) substep_reactions(world, h_ / dt);
     history_.swap();
     contacts_ms += watch.lap_ms();
@@ -232,9 +234,10 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
           dem_contact_force(model_, pp, overlap, n, v_rel, history_.old_xi(me, key), h);
       f += c.force;
       // The tangential force acts at the contact point, -R_i n from the centre.
+      const Vec3 rolling = dem_rolling_torque(pp, c.normal, w_rel);
       tau += cross(n * (-ri), c.force - n * dot(c.force, n));
-      tau += dem_rolling_torque(pp, c.normal, w_rel);
-      if (!history_.record(me, {key, c.xi, c.force})) overflow_[i] = 1;
+      tau += rolling;
+      if (!history_.record(me, {key, c.xi, c.force, rolling})) overflow_[i] = 1;
     };
 
     // Container walls: the inner faces of every box the grain is in.
@@ -260,6 +263,8 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
     for (std::uint32_t k = list.offsets[i]; k < list.offsets[i + 1]; ++k) {
       const std::uint32_t j = list.indices[k];
       if (type[j] == ParticleType::Granular) {
+        // Each pair of my grains once, by the lower id; gather_pairs gives the other its share.
+        if (id[j] < me && mine_[mat[j]]) continue;
         const Vec3 d = x[i] - x[j];
         const Real reach = ri + radius[j];
         const Real d2 = squared_norm(d);
@@ -290,6 +295,36 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
     }
     force[i] = f;
     torque[i] = tau;
+  });
+}
+
+void DemSolver::gather_pairs(World& world) {
+  Particles& p = world.particles();
+  const NeighbourList& list = world.neighbours(grains_list_);
+  const Vec3* x = p.position.data();
+  const ParticleType* type = p.type.data();
+  const MaterialId* mat = p.material.data();
+  const ParticleId* id = p.id.data();
+  const Real* radius = p.find_scalar(kRadiusField)->data();
+  Vec3* force = p.find_vector(kForceField)->data();
+  Vec3* torque = p.find_vector(kTorqueField)->data();
+  owned_.for_each(world.executor(), [&](std::uint32_t j) {
+    Vec3 f = force[j], tau = torque[j];
+    for (std::uint32_t k = list.offsets[j]; k < list.offsets[j + 1]; ++k) {
+      const std::uint32_t i = list.indices[k];
+      if (type[i] != ParticleType::Granular || id[i] > id[j] || !mine_[mat[i]]) continue;
+      const DemContactSlot* s = history_.find_new(id[i], id[j]);
+      if (!s) continue;
+      // The same n as grain i computed: from j to i.
+      const Vec3 d = x[i] - x[j];
+      const Vec3 n = d / std::sqrt(squared_norm(d));
+      const Vec3 tangential = s->force - n * dot(s->force, n);
+      f -= s->force;
+      tau += cross(n * radius[j], -tangential);
+      tau -= s->rolling;
+    }
+    force[j] = f;
+    torque[j] = tau;
   });
 }
 

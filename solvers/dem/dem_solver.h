@@ -13,9 +13,10 @@
 // interpolated around them at the step's start; the liquid neighbours gather the opposite force,
 // averaged over the sub-steps, through kLiquidCouplingForceField, so momentum is conserved.
 //
-// Determinism: each grain gathers its own contacts (pairs are computed from both sides with
-// forces that are exact opposites) and keeps its own contact history; a boundary particle reads
-// the forces back from its grains' histories. No atomics, no scatter.
+// Determinism: each pair of grains is computed once, by the grain with the lower id, which keeps
+// the pair's history; in a second pass the other grain gathers the exact opposite force (and the
+// matching torque) from it, as a boundary particle reads its forces back from its grains'
+// histories. No atomics, no scatter.
 #pragma once
 
 #include <memory>
@@ -59,6 +60,8 @@ class DemSolver : public Solver {
   // Contact, gravity and fluid forces at the current state; the fluid force is added to the
   // step's average with weight `fluid_weight`.
   void substep_forces(World& world, Real t_in_step, Real fluid_weight);
+  // Adds to each grain the opposite of the pair forces its lower-id partners computed.
+  void gather_pairs(World& world);
   void interpolate_fluid(World& world);
   void liquid_reactions(World& world);
   void substep_reactions(World& world, Real weight);
