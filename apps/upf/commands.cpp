@@ -50,7 +50,8 @@ int run_command(const RunArgs& args) {
   progress.finish();
   std::printf(
       "%s: %llu steps, %.3f s simulated in %.2f s wall, %zu liquid particles, "
-      "%.3g fluid particle-steps/s, mean %.2f pressure iterations\n",
+      "%.3g fluid particle-steps/s, mean %.2f solver iterations per step (pressure iterations, "
+      "DEM sub-steps)\n",
       scene.name.c_str(), static_cast<unsigned long long>(r.steps), r.simulated_time,
       r.wall_seconds, r.liquid_particles, r.fluid_particle_steps_per_second, r.mean_iterations);
   std::printf("output: %s (particles.pvd, metrics.csv, probes.csv, summary.json)\n",
