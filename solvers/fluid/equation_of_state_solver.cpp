@@ -37,6 +37,8 @@ void EquationOfStateSolver::step(World& world, Real dt) {
   stats_.max_density_error = max_compression(exec, fluid_.owned, f, density);
   stats_.stage_ms.emplace_back("pressure", watch.lap_ms());
 
+  // Reactions on rigid bodies from this step's pressures and densities (Akinci 2012, eq. 11).
+  add_reactions(world, f, density, pressure);
   fluid_.integrate(world, dt);
   stats_.stage_ms.emplace_back("integration", watch.lap_ms());
 }
