@@ -13,19 +13,13 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "bench/bench_support.h"
 #include "framework/core/stopwatch.h"
 #include "framework/scene/scene_builder.h"
 #include "framework/scene/scene_reader.h"
 #include "solvers/register_builtin_solvers.h"
 
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
-
-}  // namespace
+using upf::bench::median;
 
 int main(int argc, char** argv) {
   int threads = 2, steps = 100, runs = 3, reorder_every = -1;

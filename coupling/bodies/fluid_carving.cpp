@@ -5,6 +5,7 @@
 #include "coupling/mesh/closed_mesh.h"
 #include "coupling/mesh/mesh_inside_test.h"
 #include "coupling/sampling/sample_grid.h"
+#include "framework/core/vec3_eigen.h"
 
 namespace upf {
 
@@ -24,8 +25,7 @@ std::size_t carve_fluid(Particles& particles, const BodySource& body, double spa
   std::size_t count = 0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (particles.type[i] != ParticleType::Liquid) continue;
-    const Vec3& p = particles.position[i];
-    const Eigen::Vector3d x(double(p.x), double(p.y), double(p.z));
+    const Eigen::Vector3d x = to_eigen(particles.position[i]);
     if (!reach.contains(x)) continue;
     if ((closed && inside.contains(x)) || surface.any_within(x, skin)) {
       doomed[i] = 1;

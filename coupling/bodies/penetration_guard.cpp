@@ -2,20 +2,10 @@
 
 #include <limits>
 
+#include "framework/core/vec3_eigen.h"
 #include "framework/world/world.h"
 
 namespace upf {
-
-namespace {
-
-Eigen::Vector3d to_eigen(const Vec3& v) {
-  return {double(v.x), double(v.y), double(v.z)};
-}
-Vec3 to_vec3(const Eigen::Vector3d& v) {
-  return {Real(v.x()), Real(v.y()), Real(v.z())};
-}
-
-}  // namespace
 
 void PenetrationGuard::request(World& world) {
   list_ = world.request_neighbours(kLiquidMask, kBoundaryMask);

@@ -8,6 +8,7 @@
 
 #include "coupling/mesh/closed_mesh.h"
 #include "framework/core/errors.h"
+#include "framework/core/vec3_eigen.h"
 #include "framework/output/mesh_vtp_writer.h"
 #include "framework/world/world.h"
 
@@ -23,13 +24,6 @@ constexpr double kMarginPerSpacing = 0.1;
 // closer than fluid rests (about half a spacing), so the boundary forces take over from there.
 constexpr double kLayerDepthPerSpacing = 0.5;
 constexpr double kGuardClearancePerSpacing = 0.25;
-
-Vec3 to_vec3(const Eigen::Vector3d& v) {
-  return {Real(v.x()), Real(v.y()), Real(v.z())};
-}
-Eigen::Vector3d to_eigen(const Vec3& v) {
-  return {double(v.x), double(v.y), double(v.z)};
-}
 
 btTransform to_bt(const Eigen::Vector3d& origin, const Eigen::Quaterniond& q) {
   btTransform t;

@@ -3,14 +3,9 @@
 #include <map>
 
 #include "framework/boundary/akinci_volume.h"
+#include "framework/core/vec3_eigen.h"
 
 namespace upf {
-
-namespace {
-Vec3 to_vec3(const Eigen::Vector3d& v) {
-  return {Real(v[0]), Real(v[1]), Real(v[2])};
-}
-}  // namespace
 
 void add_container_walls(Particles& particles, const Box& box, Real spacing, int layers,
                          MaterialId material) {

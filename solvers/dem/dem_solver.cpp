@@ -38,8 +38,6 @@ DemSolver::DemSolver(DemModel model, const ParamValues& params, std::vector<Mate
 
 void DemSolver::prepare(World& world) {
   Particles& p = world.particles();
-  mine_.assign(world.materials().size(), 0);
-  for (MaterialId m : materials_) mine_[m] = 1;
   owned_.set_materials(world.materials().size(), materials_);
   pairs_ = std::make_unique<DemPairs>(world.materials(), world.settings().spacing);
   substep_ = Real(substep_fraction_) * pairs_->shortest_contact_time(model_);
@@ -66,6 +64,8 @@ void DemSolver::prepare(World& world) {
         world.request_neighbours(mask_of(ParticleType::Rigid), kGranularMask, list_radius);
   if (p.count(ParticleType::Liquid) > 0) {
     grain_liquid_list_ = world.request_neighbours(kGranularMask, kLiquidMask);
+    // The voidage is an SPH sum over the whole kernel support, farther than contacts reach.
+    grain_voidage_list_ = world.request_neighbours(kGranularMask, kGranularMask);
     liquid_grain_list_ = world.request_neighbours(kLiquidMask, kGranularMask);
     p.vector_field(kLiquidCouplingForceField);
     const MaterialTable& mats = world.materials();
@@ -85,7 +85,7 @@ Real DemSolver::max_time_step(const World& world) const {
   const Particles& p = world.particles();
   Real fastest = 0;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.type[i] == ParticleType::Granular && mine_[p.material[i]])
+    if (p.type[i] == ParticleType::Granular && owned_.owns(p.material[i]))
       fastest = std::max(fastest, norm(p.velocity[i]));
   if (fastest <= 0) return std::numeric_limits<Real>::max();
   return Real(0.5) * skin_ / fastest;
@@ -134,7 +134,7 @@ void DemSolver::step(World& world, Real dt) {
 void DemSolver::interpolate_fluid(World& world) {
   const Particles& p = world.particles();
   const NeighbourList& liquid = world.neighbours(grain_liquid_list_);
-  const NeighbourList& grains = world.neighbours(grains_list_);
+  const NeighbourList& grains = world.neighbours(grain_voidage_list_);
   const CubicSplineKernel kernel = world.kernel();
   const Vec3* x = p.position.data();
   const Vec3* v = p.velocity.data();
@@ -196,7 +196,7 @@ void DemSolver::liquid_reactions(World& world) {
     const Real vj = m[j] / liquid_density_[mat[j]];
     for (std::uint32_t k = grains.offsets[j]; k < grains.offsets[j + 1]; ++k) {
       const std::uint32_t i = grains.indices[k];
-      if (!mine_[mat[i]] || fluid_weight_sum_[i] <= 0) continue;
+      if (!owned_.owns(mat[i]) || fluid_weight_sum_[i] <= 0) continue;
       f -= fluid_force_[i] * (vj * kernel.value(x[j] - x[i]) / fluid_weight_sum_[i]);
     }
     out[j] = f;
@@ -264,7 +264,7 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
       const std::uint32_t j = list.indices[k];
       if (type[j] == ParticleType::Granular) {
         // Each pair of my grains once, by the lower id; gather_pairs gives the other its share.
-        if (id[j] < me && mine_[mat[j]]) continue;
+        if (id[j] < me && owned_.owns(mat[j])) continue;
         const Vec3 d = x[i] - x[j];
         const Real reach = ri + radius[j];
         const Real d2 = squared_norm(d);
@@ -312,7 +312,7 @@ void DemSolver::gather_pairs(World& world) {
     Vec3 f = force[j], tau = torque[j];
     for (std::uint32_t k = list.offsets[j]; k < list.offsets[j + 1]; ++k) {
       const std::uint32_t i = list.indices[k];
-      if (type[i] != ParticleType::Granular || id[i] > id[j] || !mine_[mat[i]]) continue;
+      if (type[i] != ParticleType::Granular || id[i] > id[j] || !owned_.owns(mat[i])) continue;
       const DemContactSlot* s = history_.find_new(id[i], id[j]);
       if (!s) continue;
       // The same n as grain i computed: from j to i.
@@ -340,7 +340,7 @@ void DemSolver::substep_reactions(World& world, Real weight) {
     Vec3 sum{};
     for (std::uint32_t k = list.offsets[b]; k < list.offsets[b + 1]; ++k) {
       const std::uint32_t g = list.indices[k];
-      if (!mine_[mat[g]]) continue;
+      if (!owned_.owns(mat[g])) continue;
       sum -= history_.new_force(id[g], id[b]);
     }
     reaction[b] += sum * weight;

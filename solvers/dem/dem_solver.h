@@ -71,7 +71,6 @@ class DemSolver : public Solver {
   DemModel model_;
   double substep_fraction_;
   std::vector<MaterialId> materials_;
-  std::vector<char> mine_;            // by material
   OwnedParticles owned_;              // my grains, this step
   std::vector<std::uint32_t> rigid_;  // rigid boundary particles, this step
   std::unique_ptr<DemPairs> pairs_;
@@ -81,7 +80,7 @@ class DemSolver : public Solver {
   Real skin_ = 0;        // m, how far contact lists reach beyond the longest contact
   bool primed_ = false;  // forces computed for the current positions
   // Grain-liquid coupling (when the scene has liquid).
-  int grain_liquid_list_ = -1, liquid_grain_list_ = -1;
+  int grain_liquid_list_ = -1, liquid_grain_list_ = -1, grain_voidage_list_ = -1;
   std::vector<Real> liquid_density_, liquid_viscosity_;  // by material
   std::vector<GrainFluidState> fluid_;                   // by particle, this step
   std::vector<Real> fluid_weight_sum_;                   // sum_j V_j W_ij, by particle

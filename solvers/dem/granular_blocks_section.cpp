@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "framework/core/vec3_eigen.h"
 #include "framework/scene/json_input.h"
 #include "framework/scene/scene.h"
 #include "framework/world/world.h"
@@ -113,15 +114,14 @@ void build_blocks(World& world, const SceneDescription& scene, const SceneSectio
     const double r = b.radius;
     const Real mass =
         Real(world.materials()[b.material].param("density") * 4.0 / 3.0 * kPi * r * r * r);
-    const Vec3 v{Real(b.velocity.x()), Real(b.velocity.y()), Real(b.velocity.z())};
+    const Vec3 v = to_vec3(b.velocity);
     for (long long k = 0; k < b.count[2]; ++k)
       for (long long j = 0; j < b.count[1]; ++j)
         for (long long i = 0; i < b.count[0]; ++i) {
           const Eigen::Vector3d x =
               b.box.min +
               (2 * r) * Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5);
-          p.add(Vec3{Real(x.x()), Real(x.y()), Real(x.z())}, v, mass, ParticleType::Granular,
-                b.material);
+          p.add(to_vec3(x), v, mass, ParticleType::Granular, b.material);
         }
   }
 }
