@@ -123,24 +123,7 @@ void RigidBodySystem::add_particles(Particles& particles) const {
 void RigidBodySystem::prepare(World& world) {
   Particles& p = world.particles();
   if (p.count(ParticleType::Rigid) > 0) p.vector_field(kBoundaryForceField);
-  // Akinci volumes over each particle's own body (see the header).
-  const TypeMask mask = kBoundaryMask;
-  NeighbourList list;
-  world.grid().find_neighbours(p, mask, mask, world.settings().support_radius(), world.executor(),
-                               list);
-  const CubicSplineKernel w = world.kernel();
-  Real* volume = p.boundary_volume.data();
-  const BodyId* body = p.body.data();
-  const Vec3* x = p.position.data();
-  world.executor().for_each(p.size(), [&](std::size_t i) {
-    if (body[i] == kNoBody) return;
-    Real sum = w.value(Real(0));
-    for (std::uint32_t k = list.offsets[i]; k < list.offsets[i + 1]; ++k) {
-      const std::uint32_t j = list.indices[k];
-      if (body[j] == body[i]) sum += w.value(x[i] - x[j]);
-    }
-    volume[i] = Real(1) / sum;
-  });
+  // Akinci volumes, over each particle's own body, are World::prepare's.
   guard_.request(world);
 }
 

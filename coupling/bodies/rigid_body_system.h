@@ -8,8 +8,9 @@
 // with the world's axes. Each boundary particle keeps its position in the body frame (field
 // kBodyLocalPositionField) and is placed at x = X + R r0 with v = V + w x (x - X) every step.
 //
-// Boundary volumes (Akinci's V_b = 1 / sum_k W_bk) sum over the particle's own body only, so they
-// are computed once: a body's sampling does not change as it moves past walls and other bodies.
+// Boundary volumes (Akinci's V_b = 1 / sum_k W_bk) sum over the particle's own body only
+// (compute_boundary_volumes, called once by World::prepare): a body's sampling does not change
+// as it moves past walls and other bodies.
 //
 // Per-body sums run over the particles in index order on one thread, and Bullet steps on one
 // thread: the same bits for any thread count.

@@ -14,7 +14,11 @@ void compute_boundary_volumes(Particles& particles, TypeMask boundary,
       return;
     }
     Real sum = kernel.value(Real(0));
-    for (std::uint32_t k : boundary_neighbours.of(b)) sum += kernel.value(x[b] - x[k]);
+    // A body's particles see only their own body, so a body's sampling, and its volumes, stay the
+    // same as it moves past walls and other bodies; walls (no body) see walls.
+    const BodyId own = particles.body[b];
+    for (std::uint32_t k : boundary_neighbours.of(b))
+      if (particles.body[k] == own) sum += kernel.value(x[b] - x[k]);
     particles.boundary_volume[b] = Real(1) / sum;
   });
 }

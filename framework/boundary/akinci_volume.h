@@ -21,8 +21,9 @@ namespace upf {
 inline constexpr const char* kKnownBoundaryVolumeField = "boundary.known_volume";
 
 // Writes boundary_volume for every particle of a type in `boundary` from `boundary_neighbours`
-// (a list of boundary -> boundary neighbours, self excluded), or the particle's
-// kKnownBoundaryVolumeField value where that field exists and is positive.
+// (a list of boundary -> boundary neighbours, self excluded) that belong to the same body (or,
+// for particles of no body, to no body), or the particle's kKnownBoundaryVolumeField value
+// where that field exists and is positive.
 void compute_boundary_volumes(Particles& particles, TypeMask boundary,
                               const NeighbourList& boundary_neighbours,
                               const CubicSplineKernel& kernel, const CpuExecutor& exec);

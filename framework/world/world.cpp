@@ -37,14 +37,13 @@ int World::request_neighbours(TypeMask query, TypeMask target, Real radius) {
 }
 
 void World::prepare() {
-  // Frozen particles keep their shape, so their volumes are computed once, here. Particles of a
-  // body (static, kinematic or rigid) see only their own body: that body system sets them.
+  // Boundary particles keep their shape (walls stand still, a body moves as a whole), so their
+  // volumes are computed once, here, each over its own body or over the walls.
   grid_.build(particles_, executor_);
-  NeighbourList frozen;
-  const TypeMask frozen_mask = mask_of(ParticleType::Frozen);
-  grid_.find_neighbours(particles_, frozen_mask, frozen_mask, settings_.support_radius(), executor_,
-                        frozen);
-  compute_boundary_volumes(particles_, frozen_mask, frozen, kernel(), executor_);
+  NeighbourList boundary;
+  grid_.find_neighbours(particles_, kBoundaryMask, kBoundaryMask, settings_.support_radius(),
+                        executor_, boundary);
+  compute_boundary_volumes(particles_, kBoundaryMask, boundary, kernel(), executor_);
   for (auto& b : bodies_) b->prepare(*this);
 
   for (auto& s : solvers_) s->prepare(*this);

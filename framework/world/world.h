@@ -58,8 +58,8 @@ class World {
   const NeighbourList& neighbours(int handle) const { return lists_.at(std::size_t(handle)).list; }
   const NeighbourGrid& grid() const { return grid_; }
 
-  // Boundary volumes of frozen particles (Akinci et al. 2012), every body system's prepare, then
-  // every solver's prepare.
+  // Boundary volumes of frozen and rigid particles (Akinci et al. 2012), every body system's
+  // prepare, then every solver's prepare.
   void prepare();
 
   // The next step size: the fixed dt, or the minimum over solvers clamped to [dt_min, dt_max].
