@@ -49,7 +49,7 @@ void DemSolver::prepare(World& world) {
   primed_ = false;
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.type[i] == ParticleType::Granular) radius[i] = pairs_->grain(p.material[i]).radius;
-  history_.reset(p);
+  contacts_.clear();
   Real reach = 0;
   for (MaterialId m : materials_) {
     const Real r = pairs_->grain(m).radius;
@@ -96,13 +96,19 @@ void DemSolver::step(World& world, Real dt) {
   stats_ = SolverStats{};
   const int n = std::max(1, int(std::ceil(double(dt) / double(substep_) - 1e-9)));
   h_ = dt / Real(n);
-  overflow_.assign(world.particles().size(), 0);
   const Particles& particles = world.particles();
   owned_.rebuild(particles);
   rigid_.clear();
   if (reaction_list_ >= 0)
     for (std::size_t i = 0; i < particles.size(); ++i)
       if (particles.type[i] == ParticleType::Rigid) rigid_.push_back(std::uint32_t(i));
+  DemContactList::Sources sources;
+  sources.grains = &world.neighbours(grains_list_);
+  sources.reactions = reaction_list_ >= 0 ? &world.neighbours(reaction_list_) : nullptr;
+  sources.boxes = &world.containers();
+  sources.radius = particles.find_scalar(kRadiusField)->data();
+  sources.skin = skin_;
+  contacts_.rebuild(particles, owned_, sources, world.executor());
   double contacts_ms = 0, integrate_ms = 0;
   // Velocity Verlet (as in LIGGGHTS): kick half, drift, forces at the new positions with the
   // half-step velocities, kick half. The forces are kept in particle fields, so they follow the
@@ -120,13 +126,11 @@ void DemSolver::step(World& world, Real dt) {
     substep_forces(world, Real(k + 1) * h_, h_ / dt);
     gather_pairs(world);
     if (reaction_list_ >= 0) substep_reactions(world, h_ / dt);
-    history_.swap();
     contacts_ms += watch.lap_ms();
     kick_drift(world, Real(0.5) * h_, 0);
     integrate_ms += watch.lap_ms();
   }
   if (liquid) liquid_reactions(world);
-  for (std::uint8_t o : overflow_) dropped_ += o;
   stats_.iterations = n;
   stats_.stage_ms = {{"dem_contacts", contacts_ms}, {"dem_integration", integrate_ms}};
 }
@@ -205,14 +209,11 @@ void DemSolver::liquid_reactions(World& world) {
 
 void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) {
   Particles& p = world.particles();
-  const NeighbourList& list = world.neighbours(grains_list_);
   const Vec3* x = p.position.data();
   const Vec3* v = p.velocity.data();
   const Real* m = p.mass.data();
   const ParticleType* type = p.type.data();
   const MaterialId* mat = p.material.data();
-  const ParticleId* id = p.id.data();
-  const BodyId* body = p.body.data();
   const Real* radius = p.find_scalar(kRadiusField)->data();
   const Vec3* w = p.find_vector(kAngularVelocityField)->data();
   const Vec3 g = world.settings().gravity;
@@ -223,68 +224,70 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
   Vec3* torque = p.find_vector(kTorqueField)->data();
 
   owned_.for_each(world.executor(), [&](std::uint32_t i) {
-    const ParticleId me = id[i];
     const Real ri = radius[i];
     Vec3 f = g * m[i];
     Vec3 tau{};
-    history_.begin(me);
-    auto contact = [&](std::uint32_t key, const DemPairParams& pp, Real overlap, const Vec3& n,
-                       const Vec3& v_rel, const Vec3& w_rel) {
+    // r_partner: the partner's radius, for the torque it gets back (gather_pairs).
+    auto contact = [&](std::uint32_t k, const DemPairParams& pp, Real overlap, const Vec3& n,
+                       const Vec3& v_rel, const Vec3& w_rel, Real r_partner) {
       const DemContactForce c =
-          dem_contact_force(model_, pp, overlap, n, v_rel, history_.old_xi(me, key), h);
+          dem_contact_force(model_, pp, overlap, n, v_rel, contacts_.xi(k), h);
       f += c.force;
       // The tangential force acts at the contact point, -R_i n from the centre.
       const Vec3 rolling = dem_rolling_torque(pp, c.normal, w_rel);
-      tau += cross(n * (-ri), c.force - n * dot(c.force, n));
+      const Vec3 tangential = c.force - n * dot(c.force, n);
+      tau += cross(n * (-ri), tangential);
       tau += rolling;
-      if (!history_.record(me, {key, c.xi, c.force, rolling})) overflow_[i] = 1;
+      contacts_.touch(k, c.xi, c.force, cross(n * r_partner, -tangential), rolling);
     };
 
-    // Container walls: the inner faces of every box the grain is in.
-    for (std::size_t b = 0; b < boxes.size(); ++b) {
-      const ContainerBox& box = boxes[b];
-      bool inside = true;
-      for (int a = 0; a < 3; ++a)
-        inside = inside && x[i][a] > box.min[a] - ri && x[i][a] < box.max[a] + ri;
-      if (!inside) continue;
-      for (int face = 0; face < 6; ++face) {
-        const int a = face / 2;
-        const bool lower = face % 2 == 0;
-        const Real gap = lower ? x[i][a] - box.min[a] : box.max[a] - x[i][a];
-        const Real overlap = ri - gap;
-        if (overlap <= 0) continue;
+    for (std::uint32_t k = contacts_.begin(i); k < contacts_.end(i); ++k) {
+      const std::uint32_t j = contacts_.partner(k);
+      if (j & kDemWallPartner) {
+        // A container face, if the grain is inside the box (or within a radius of it).
+        const std::uint32_t code = j & ~kDemWallPartner;
+        const ContainerBox& box = boxes[code / 6];
+        bool inside = true;
+        for (int a = 0; a < 3; ++a)
+          inside = inside && x[i][a] > box.min[a] - ri && x[i][a] < box.max[a] + ri;
+        const int a = int(code % 6) / 2;
+        const bool lower = code % 2 == 0;
+        const Real overlap = ri - (lower ? x[i][a] - box.min[a] : box.max[a] - x[i][a]);
+        if (!inside || overlap <= 0) {
+          contacts_.separate(k);
+          continue;
+        }
         Vec3 n{};
         n[a] = lower ? Real(1) : Real(-1);
         const Vec3 v_rel = v[i] - cross(w[i] * ri, n);
-        contact(dem_wall_key(b, face), pairs_->wall(mat[i]), overlap, n, v_rel, w[i]);
-      }
-    }
-
-    for (std::uint32_t k = list.offsets[i]; k < list.offsets[i + 1]; ++k) {
-      const std::uint32_t j = list.indices[k];
-      if (type[j] == ParticleType::Granular) {
-        // Each pair of my grains once, by the lower id; gather_pairs gives the other its share.
-        if (id[j] < me && owned_.owns(mat[j])) continue;
+        contact(k, pairs_->wall(mat[i]), overlap, n, v_rel, w[i], 0);
+      } else if (type[j] == ParticleType::Granular) {
         const Vec3 d = x[i] - x[j];
         const Real reach = ri + radius[j];
         const Real d2 = squared_norm(d);
-        if (d2 >= reach * reach || d2 <= 0) continue;
+        if (d2 >= reach * reach || d2 <= 0) {
+          contacts_.separate(k);
+          continue;
+        }
         const Real dist = std::sqrt(d2);
         const Real overlap = reach - dist;
         const Vec3 n = d / dist;
         const Vec3 v_rel = v[i] - v[j] - cross(w[i] * ri + w[j] * radius[j], n);
-        contact(id[j], pairs_->pair(mat[i], mat[j]), overlap, n, v_rel, w[i] - w[j]);
-      } else if (body[j] != kNoBody) {
+        contact(k, pairs_->pair(mat[i], mat[j]), overlap, n, v_rel, w[i] - w[j], radius[j]);
+      } else {
         // A body's boundary particle, moving on at its step-start velocity.
         const Vec3 d = x[i] - (x[j] + v[j] * t_in_step);
         const Real reach = ri + rb;
         const Real d2 = squared_norm(d);
-        if (d2 >= reach * reach || d2 <= 0) continue;
+        if (d2 >= reach * reach || d2 <= 0) {
+          contacts_.separate(k);
+          continue;
+        }
         const Real dist = std::sqrt(d2);
         const Real overlap = reach - dist;
         const Vec3 n = d / dist;
         const Vec3 v_rel = v[i] - v[j] - cross(w[i] * ri, n);
-        contact(id[j], pairs_->boundary(mat[i]), overlap, n, v_rel, w[i]);
+        contact(k, pairs_->boundary(mat[i]), overlap, n, v_rel, w[i], rb);
       }
     }
     if (!fluid_.empty() && fluid_[i].fluid_fraction > 0) {
@@ -300,28 +303,16 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
 
 void DemSolver::gather_pairs(World& world) {
   Particles& p = world.particles();
-  const NeighbourList& list = world.neighbours(grains_list_);
-  const Vec3* x = p.position.data();
-  const ParticleType* type = p.type.data();
-  const MaterialId* mat = p.material.data();
-  const ParticleId* id = p.id.data();
-  const Real* radius = p.find_scalar(kRadiusField)->data();
   Vec3* force = p.find_vector(kForceField)->data();
   Vec3* torque = p.find_vector(kTorqueField)->data();
   owned_.for_each(world.executor(), [&](std::uint32_t j) {
     Vec3 f = force[j], tau = torque[j];
-    for (std::uint32_t k = list.offsets[j]; k < list.offsets[j + 1]; ++k) {
-      const std::uint32_t i = list.indices[k];
-      if (type[i] != ParticleType::Granular || id[i] > id[j] || !owned_.owns(mat[i])) continue;
-      const DemContactSlot* s = history_.find_new(id[i], id[j]);
-      if (!s) continue;
-      // The same n as grain i computed: from j to i.
-      const Vec3 d = x[i] - x[j];
-      const Vec3 n = d / std::sqrt(squared_norm(d));
-      const Vec3 tangential = s->force - n * dot(s->force, n);
-      f -= s->force;
-      tau += cross(n * radius[j], -tangential);
-      tau -= s->rolling;
+    for (std::uint32_t r = contacts_.reverse_begin(j); r < contacts_.reverse_end(j); ++r) {
+      const std::uint32_t k = contacts_.reverse_pair(r);
+      if (!contacts_.touching(k)) continue;
+      f -= contacts_.force(k);
+      tau += contacts_.partner_torque(k);
+      tau -= contacts_.partner_rolling(k);
     }
     force[j] = f;
     torque[j] = tau;
@@ -329,19 +320,14 @@ void DemSolver::gather_pairs(World& world) {
 }
 
 void DemSolver::substep_reactions(World& world, Real weight) {
-  Particles& p = world.particles();
-  const NeighbourList& list = world.neighbours(reaction_list_);
-  Vec3* reaction = p.find_vector(kBoundaryForceField)->data();
-  const MaterialId* mat = p.material.data();
-  const ParticleId* id = p.id.data();
+  Vec3* reaction = world.particles().find_vector(kBoundaryForceField)->data();
   const std::uint32_t* rigid = rigid_.data();
   world.executor().for_each(rigid_.size(), [&](std::size_t r) {
     const std::uint32_t b = rigid[r];
     Vec3 sum{};
-    for (std::uint32_t k = list.offsets[b]; k < list.offsets[b + 1]; ++k) {
-      const std::uint32_t g = list.indices[k];
-      if (!owned_.owns(mat[g])) continue;
-      sum -= history_.new_force(id[g], id[b]);
+    for (std::uint32_t q = contacts_.reverse_begin(b); q < contacts_.reverse_end(b); ++q) {
+      const std::uint32_t k = contacts_.reverse_pair(q);
+      if (contacts_.touching(k)) sum -= contacts_.force(k);
     }
     reaction[b] += sum * weight;
   });

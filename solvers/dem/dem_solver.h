@@ -13,10 +13,10 @@
 // interpolated around them at the step's start; the liquid neighbours gather the opposite force,
 // averaged over the sub-steps, through kLiquidCouplingForceField, so momentum is conserved.
 //
-// Determinism: each pair of grains is computed once, by the grain with the lower id, which keeps
-// the pair's history; in a second pass the other grain gathers the exact opposite force (and the
-// matching torque) from it, as a boundary particle reads its forces back from its grains'
-// histories. No atomics, no scatter.
+// Determinism: each pair of grains is computed once, by the grain with the lower id, which holds
+// the pair and its spring (dem_contact_list.h); in a second pass the other grain gathers the
+// exact opposite force (and the matching torque) from it, as a boundary particle reads its forces
+// back from its grains' contacts. No atomics, no scatter.
 #pragma once
 
 #include <memory>
@@ -26,7 +26,7 @@
 #include "framework/params/param_spec.h"
 #include "framework/solver/solver.h"
 #include "solvers/dem/dem_contact.h"
-#include "solvers/dem/dem_contact_history.h"
+#include "solvers/dem/dem_contact_list.h"
 #include "solvers/dem/dem_fluid_drag.h"
 #include "solvers/dem/dem_pairs.h"
 #include "solvers/fluid/owned_particles.h"
@@ -53,8 +53,6 @@ class DemSolver : public Solver {
 
   // The longest sub-step the materials allow, s.
   Real substep() const { return substep_; }
-  // Contacts dropped because a grain had more than DemContactHistory::kSlots (0 expected).
-  std::size_t dropped_contacts() const { return dropped_; }
 
  private:
   // Contact, gravity and fluid forces at the current state; the fluid force is added to the
@@ -74,7 +72,7 @@ class DemSolver : public Solver {
   OwnedParticles owned_;              // my grains, this step
   std::vector<std::uint32_t> rigid_;  // rigid boundary particles, this step
   std::unique_ptr<DemPairs> pairs_;
-  DemContactHistory history_;
+  DemContactList contacts_;  // this world step's candidates and their springs
   int grains_list_ = -1, reaction_list_ = -1;
   Real substep_ = 0, h_ = 0;
   Real skin_ = 0;        // m, how far contact lists reach beyond the longest contact
@@ -86,8 +84,6 @@ class DemSolver : public Solver {
   std::vector<Real> fluid_weight_sum_;                   // sum_j V_j W_ij, by particle
   std::vector<Vec3> start_position_;                     // grains at the step's start
   std::vector<Vec3> fluid_force_;                        // step average, by particle
-  std::vector<std::uint8_t> overflow_;
-  std::size_t dropped_ = 0;
   SolverStats stats_;
 };
 

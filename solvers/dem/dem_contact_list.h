@@ -1,0 +1,110 @@
+// The candidate contacts of one world step and their tangential springs, in the layout of
+// LAMMPS's granular pair styles (the "shear history" kept alongside the neighbour list): each
+// grain's candidates (partners within contact reach plus the lists' skin, and the container faces
+// as near) lie in one contiguous run, and each candidate carries its own spring xi, so a
+// sub-step reads and writes history by position, with no search.
+//
+// A pair of grains is one candidate, held by the grain with the lower id (or by both when the
+// partner belongs to another solver); the partner reads the pair's force back through the
+// reverse index, as a rigid body's boundary particle does. Only the holder writes a candidate,
+// so one buffer suffices and no thread sees another's half-written state.
+//
+// The list is rebuilt every world step from the neighbour lists. Springs carry over by the
+// stable (grain id, partner key) of their pair, so reordering the particles loses nothing.
+// Sum orders follow the neighbour lists, which depend on positions and ids only: results do not
+// depend on memory order or thread count.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "framework/core/vec3.h"
+#include "framework/executors/cpu/cpu_executor.h"
+#include "framework/neighbours/neighbour_list.h"
+#include "framework/particles/particles.h"
+#include "framework/world/container_box.h"
+#include "solvers/fluid/owned_particles.h"
+
+namespace upf {
+
+// Partner of a container-face candidate: this flag with container * 6 + face.
+inline constexpr std::uint32_t kDemWallPartner = 0x80000000u;
+
+// Wall faces have keys too: container c, face f (0..5) gets a key above every particle id.
+inline constexpr std::uint32_t dem_wall_key(std::size_t container, int face) {
+  return 0xFFFFFFFFu - std::uint32_t(container * 6 + std::size_t(face));
+}
+
+class DemContactList {
+ public:
+  struct Sources {
+    const NeighbourList* grains = nullptr;     // owned grains -> grains and boundary particles
+    const NeighbourList* reactions = nullptr;  // rigid boundary particles -> grains, or null
+    const std::vector<ContainerBox>* boxes = nullptr;
+    const Real* radius = nullptr;  // grain radius by particle
+    Real skin = 0;                 // m, how far beyond contact the candidates reach
+  };
+
+  // Forgets every spring (a new world).
+  void clear();
+  // The candidates of this world step; springs carry over from the last.
+  void rebuild(const Particles& particles, const OwnedParticles& owned, const Sources& sources,
+               const CpuExecutor& exec);
+
+  // Candidates of particle i: [begin(i), end(i)).
+  std::uint32_t begin(std::size_t i) const { return offsets_[i]; }
+  std::uint32_t end(std::size_t i) const { return offsets_[i + 1]; }
+  std::uint32_t partner(std::uint32_t k) const { return partner_[k]; }
+  std::uint32_t key(std::uint32_t k) const { return key_[k]; }
+  const Vec3& xi(std::uint32_t k) const { return xi_[k]; }
+
+  // Records candidate k as touching this sub-step: its new spring, the force on the holder and
+  // the torque on the partner (contact and rolling parts).
+  void touch(std::uint32_t k, const Vec3& xi, const Vec3& force, const Vec3& partner_torque,
+             const Vec3& partner_rolling) {
+    xi_[k] = xi;
+    force_[k] = force;
+    partner_torque_[k] = partner_torque;
+    partner_rolling_[k] = partner_rolling;
+    touching_[k] = 1;
+  }
+  // Candidate k is apart this sub-step: its spring is gone.
+  void separate(std::uint32_t k) {
+    xi_[k] = Vec3{};
+    touching_[k] = 0;
+  }
+
+  // Candidates whose partner is particle j (a grain with the higher id, or a rigid boundary
+  // particle), in the order of j's own neighbour list: [reverse_begin(j), reverse_end(j)) index
+  // reverse_pair().
+  std::uint32_t reverse_begin(std::size_t j) const { return reverse_offsets_[j]; }
+  std::uint32_t reverse_end(std::size_t j) const { return reverse_offsets_[j + 1]; }
+  std::uint32_t reverse_pair(std::uint32_t r) const { return reverse_[r]; }
+  bool touching(std::uint32_t k) const { return touching_[k] != 0; }
+  const Vec3& force(std::uint32_t k) const { return force_[k]; }
+  const Vec3& partner_torque(std::uint32_t k) const { return partner_torque_[k]; }
+  const Vec3& partner_rolling(std::uint32_t k) const { return partner_rolling_[k]; }
+
+  std::size_t size() const { return partner_.size(); }
+
+ private:
+  // Whether grain i holds the pair with neighbour j (see the header comment).
+  static bool holds(const Particles& p, const OwnedParticles& owned, std::uint32_t i,
+                    std::uint32_t j);
+  void carry_springs(const Particles& particles, const OwnedParticles& owned,
+                     const CpuExecutor& exec);
+  void build_reverse(const Particles& particles, const OwnedParticles& owned,
+                     const Sources& sources, const CpuExecutor& exec);
+
+  std::vector<std::uint32_t> offsets_;  // by particle, size() + 1
+  std::vector<std::uint32_t> partner_, key_;
+  std::vector<Vec3> xi_, force_, partner_torque_, partner_rolling_;
+  std::vector<std::uint8_t> touching_;
+  std::vector<std::uint32_t> reverse_offsets_, reverse_;
+  // The last step's springs, found by the holder's id: its candidates' keys and springs.
+  std::vector<std::uint32_t> last_begin_by_id_, last_count_by_id_;
+  std::vector<std::uint32_t> last_key_;
+  std::vector<Vec3> last_xi_;
+};
+
+}  // namespace upf
