@@ -2,10 +2,15 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <iterator>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "app_registry.h"
+#include "checkpoint_options.h"
+#include "framework/checkpoint/checkpoint_file.h"
 #include "framework/compare/compare_report.h"
 #include "framework/compare/comparison.h"
 #include "framework/compare/report_table.h"
@@ -14,6 +19,7 @@
 #include "framework/scene/scene_reader.h"
 #include "framework/scene/solver_override.h"
 #include "framework/solver/registry.h"
+#include "interrupt_signal.h"
 #include "progress.h"
 
 namespace upf::app {
@@ -28,16 +34,49 @@ void print_params(const std::vector<ParamSpec>& specs) {
 }
 }  // namespace
 
+namespace {
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open the scene file");
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
 int run_command(const RunArgs& args) {
   const Registry registry = make_app_registry();
-  SceneDescription scene = load_scene_file(args.scene, registry);
-  if (!args.solver.empty()) scene = with_solver(scene, registry, args.solver);
+  // What to run: the scene file and the options given, or all of it from the checkpoint.
+  ResumableRun run;
+  std::filesystem::path out_dir = args.out_dir;
+  SceneDescription scene;
+  if (!args.resume.empty()) {
+    out_dir = args.resume;
+    const std::string where = (out_dir / kCheckpointFileName).string();
+    run = from_header(read_checkpoint_header(out_dir), where);
+    const nlohmann::json document = nlohmann::json::parse(run.scene_text, nullptr, false);
+    if (document.is_discarded()) throw InputError(where, "the checkpoint's scene is not JSON");
+    scene = read_scene(document, registry, run.scene_source);
+  } else {
+    run.scene_text = read_text(args.scene);
+    run.scene_source = args.scene;
+    run.solver = args.solver;
+    run.end_time = args.end_time;
+    run.no_frames = args.no_frames;
+    run.checkpoint_every = args.checkpoint_every;
+    scene = load_scene_file(args.scene, registry);
+    if (out_dir.empty()) out_dir = std::filesystem::path("out") / scene.name;
+  }
+  if (!run.solver.empty()) scene = with_solver(scene, registry, run.solver);
   RunOptions options;
-  options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / scene.name
-                                         : std::filesystem::path(args.out_dir);
+  options.out_dir = out_dir;
   options.threads = args.threads;
-  options.end_time = args.end_time;
-  options.write_frames = !args.no_frames;
+  options.end_time = run.end_time;
+  options.write_frames = !run.no_frames;
+  if (!run.checkpoint_every.empty())
+    options.checkpoint = parse_checkpoint_every(run.checkpoint_every);
+  options.checkpoint_header = to_header(run);
+  options.resume = !args.resume.empty();
+  InterruptSignal interrupt;
+  options.stop_requested = [&] { return interrupt.requested(); };
   ProgressReporter progress(stderr);
   if (!args.quiet) options.on_progress = [&](const RunProgress& p) { progress.update(p); };
   RunResult r;
@@ -48,14 +87,21 @@ int run_command(const RunArgs& args) {
     throw;
   }
   progress.finish();
+  const std::string out = options.out_dir.string();
+  if (r.status == "interrupted") {
+    std::fprintf(stderr,
+                 "interrupted at t = %.4f s (step %llu); checkpoint and summary written.\n"
+                 "resume with: upf run --resume %s\n",
+                 r.simulated_time, static_cast<unsigned long long>(r.steps), out.c_str());
+    return static_cast<int>(ExitCode::Interrupted);
+  }
   std::printf(
       "%s: %llu steps, %.3f s simulated in %.2f s wall, %zu liquid particles, "
       "%.3g fluid particle-steps/s, mean %.2f solver iterations per step (pressure iterations, "
       "DEM sub-steps)\n",
       scene.name.c_str(), static_cast<unsigned long long>(r.steps), r.simulated_time,
       r.wall_seconds, r.liquid_particles, r.fluid_particle_steps_per_second, r.mean_iterations);
-  std::printf("output: %s (particles.pvd, metrics.csv, probes.csv, summary.json)\n",
-              options.out_dir.string().c_str());
+  std::printf("output: %s (particles.pvd, metrics.csv, probes.csv, summary.json)\n", out.c_str());
   return 0;
 }
 

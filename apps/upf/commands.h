@@ -14,7 +14,9 @@ struct RunArgs {
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;
-  std::string solver;  // empty: the scene's own solvers
+  std::string solver;            // empty: the scene's own solvers
+  std::string checkpoint_every;  // empty: checkpoints only on Ctrl-C
+  std::string resume;            // a run directory to continue; then scene is empty
 };
 
 struct CompareArgs {

@@ -1,9 +1,12 @@
 // upf: the command-line program. Thin: it parses arguments and calls the framework.
 //   upf run SCENE [--out DIR] [--threads N] [--end T] [--quiet] [--solver NAME]
+//           [--checkpoint-every 5m|0.5sim]
+//   upf run --resume DIR [--threads N]
 //   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
 //   upf validate SCENE...
 //   upf info
-// Exit codes: 0 ok, 1 other failure (output, compare's plots), 2 bad input, 3 unstable run.
+// Exit codes: 0 ok, 1 other failure (output, compare's plots), 2 bad input, 3 unstable run,
+// 130 interrupted (Ctrl-C: a checkpoint was written, the run can be resumed).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
@@ -34,11 +37,24 @@ int main(int argc, char** argv) {
 
   upf::app::RunArgs run_args;
   auto* run = app.add_subcommand("run", "run a scene: frames, metrics and probes into --out");
-  run->add_option("scene", run_args.scene, "scene file (JSON)")->required();
-  run->add_option("--out,-o", run_args.out_dir, "output directory (default out/<scene name>)");
+  auto* scene_option = run->add_option("scene", run_args.scene, "scene file (JSON)");
+  auto* out_option =
+      run->add_option("--out,-o", run_args.out_dir, "output directory (default out/<scene name>)");
   add_run_controls(*run, run_args.threads, run_args.end_time, run_args.quiet, run_args.no_frames);
-  run->add_option("--solver", run_args.solver,
-                  "move every material of the solver's particle type with this solver");
+  auto* solver_option =
+      run->add_option("--solver", run_args.solver,
+                      "move every material of the solver's particle type with this solver");
+  auto* every_option = run->add_option(
+      "--checkpoint-every", run_args.checkpoint_every,
+      "write a checkpoint every DURATION: 300s, 5m, 2h (wall-clock) or 0.5sim (simulated "
+      "seconds; bitwise reproducible even with rigid-body contacts). Ctrl-C always writes one");
+  run->add_option("--resume", run_args.resume,
+                  "continue the run in this output directory from its checkpoint, with the scene "
+                  "and options it was started with")
+      ->excludes(scene_option)
+      ->excludes(out_option)
+      ->excludes(solver_option)
+      ->excludes(every_option);
 
   upf::app::CompareArgs compare_args;
   auto* compare = app.add_subcommand(
@@ -71,7 +87,11 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return upf::app::run_command(run_args);
+    if (*run) {
+      if (run_args.scene.empty() && run_args.resume.empty())
+        throw upf::InputError("upf run", "give a scene file, or --resume DIR");
+      return upf::app::run_command(run_args);
+    }
     if (*compare) {
       compare_args.solvers_given = solvers->count() > 0;
       return upf::app::compare_command(compare_args);

@@ -7,6 +7,7 @@
 #include <iomanip>
 
 #include "coupling/mesh/closed_mesh.h"
+#include "framework/checkpoint/state_stream.h"
 #include "framework/core/errors.h"
 #include "framework/core/vec3_eigen.h"
 #include "framework/output/mesh_vtp_writer.h"
@@ -39,11 +40,9 @@ RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWal
     : bodies_(std::move(bodies)),
       walls_(std::move(walls)),
       spacing_(spacing),
-      bullet_(std::make_unique<BulletWorld>(gravity)),
+      gravity_(gravity),
       guard_(kLayerDepthPerSpacing * spacing, kGuardClearancePerSpacing * spacing) {
   const double margin = kMarginPerSpacing * spacing_;
-  for (const auto& w : walls_)
-    bullet_->add_static_box(w.center, w.half_extents, w.friction, w.restitution, margin);
   for (Body& b : bodies_) {
     const BodySource& s = b.source;
     if (s.kind == BodyKind::Dynamic) {
@@ -70,10 +69,24 @@ RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWal
     guarded_meshes_.push_back(b.inside.get());
     b.shape =
         make_body_shape(s.mesh, b.local_vertices, s.kind, s.mass ? s.mass->volume : 0.0, margin);
+  }
+  build_bullet();
+  read_states();
+}
+
+void RigidBodySystem::build_bullet() {
+  bullet_.reset();  // removes the bodies from the old world before they are replaced
+  bullet_ = std::make_unique<BulletWorld>(gravity_);
+  const double margin = kMarginPerSpacing * spacing_;
+  for (const auto& w : walls_)
+    bullet_->add_static_box(w.center, w.half_extents, w.friction, w.restitution, margin);
+  for (Body& b : bodies_) {
+    const BodySource& s = b.source;
     const double mass = s.kind == BodyKind::Dynamic ? s.mass->mass : 0.0;
     btVector3 inertia(0, 0, 0);
     if (s.kind == BodyKind::Dynamic) {
       // The diagonal of the inertia tensor in the principal frame.
+      const Eigen::Matrix3d to_local = b.rotation0.toRotationMatrix().transpose();
       const Eigen::Matrix3d local = to_local * s.mass->inertia * to_local.transpose();
       inertia = btVector3(btScalar(local(0, 0)), btScalar(local(1, 1)), btScalar(local(2, 2)));
     }
@@ -94,7 +107,6 @@ RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWal
     b.rigid->setActivationState(DISABLE_DEACTIVATION);
     bullet_->add(b.rigid.get());
   }
-  read_states();
 }
 
 RigidBodySystem::~RigidBodySystem() {
@@ -270,6 +282,10 @@ Eigen::Vector3d RigidBodySystem::momentum() const {
 void RigidBodySystem::open_outputs(const std::filesystem::path& out_dir, bool write_frames) {
   write_meshes_ = write_frames;
   csv_path_ = out_dir / "bodies.csv";
+  if (resume_csv_size_ >= 0) {  // restored before the outputs opened: a resumed run
+    reopen_csv();
+    return;
+  }
   csv_.open(csv_path_, std::ios::trunc);
   if (!csv_) throw OutputError("cannot write " + csv_path_.string());
   csv_ << "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,fx,fy,fz,tx,ty,tz\n";
@@ -315,6 +331,83 @@ std::vector<std::string> RigidBodySystem::write_frame(const std::filesystem::pat
     if (!csv_) throw OutputError("cannot write " + csv_path_.string() + " (disk full?)");
   }
   return files;
+}
+
+namespace {
+
+void put_vector3(StateWriter& out, const Eigen::Vector3d& v) {
+  for (int a = 0; a < 3; ++a) out.put(v[a]);
+}
+Eigen::Vector3d get_vector3(StateReader& in) {
+  Eigen::Vector3d v;
+  for (int a = 0; a < 3; ++a) v[a] = in.get<double>();
+  return v;
+}
+void put_bt(StateWriter& out, const btVector3& v) {
+  for (int a = 0; a < 3; ++a) out.put(v[a]);
+}
+btVector3 get_bt(StateReader& in) {
+  btVector3 v;
+  for (int a = 0; a < 3; ++a) v[a] = in.get<btScalar>();
+  return v;
+}
+
+}  // namespace
+
+void RigidBodySystem::save_state(StateWriter& out) const {
+  out.put(time_);
+  out.put(std::uint64_t(bodies_.size()));
+  for (const Body& b : bodies_) {
+    const btTransform& tr = b.rigid->getWorldTransform();
+    for (int r = 0; r < 3; ++r) put_bt(out, tr.getBasis()[r]);
+    put_bt(out, tr.getOrigin());
+    put_bt(out, b.rigid->getLinearVelocity());
+    put_bt(out, b.rigid->getAngularVelocity());
+    put_vector3(out, b.state.fluid_force);
+    put_vector3(out, b.state.fluid_torque);
+  }
+  // write_frame flushes bodies.csv, so its size on disk is all of it.
+  std::error_code ec;
+  const auto csv_size = csv_.is_open() ? std::filesystem::file_size(csv_path_, ec) : 0;
+  out.put(csv_.is_open() && !ec ? std::int64_t(csv_size) : std::int64_t(-1));
+}
+
+void RigidBodySystem::restore_state(StateReader& in) {
+  time_ = in.get<double>();
+  in.expect(in.get<std::uint64_t>() == bodies_.size(), "the number of bodies");
+  // A fresh Bullet world, as a resumed run makes: Bullet's contact caches (persistent manifolds,
+  // the pair cache's order) are not part of the state, so the run that saved starts over from
+  // exactly the same place.
+  build_bullet();
+  for (Body& b : bodies_) {
+    btTransform tr;
+    btMatrix3x3 basis;
+    for (int r = 0; r < 3; ++r) basis[r] = get_bt(in);
+    tr.setBasis(basis);
+    tr.setOrigin(get_bt(in));
+    b.rigid->setWorldTransform(tr);
+    b.rigid->setInterpolationWorldTransform(tr);
+    b.rigid->setLinearVelocity(get_bt(in));
+    b.rigid->setAngularVelocity(get_bt(in));
+    b.rigid->setInterpolationLinearVelocity(b.rigid->getLinearVelocity());
+    b.rigid->setInterpolationAngularVelocity(b.rigid->getAngularVelocity());
+    b.state.fluid_force = get_vector3(in);
+    b.state.fluid_torque = get_vector3(in);
+  }
+  read_states();
+  resume_csv_size_ = in.get<std::int64_t>();
+  if (csv_.is_open() && resume_csv_size_ >= 0) reopen_csv();
+}
+
+void RigidBodySystem::reopen_csv() {
+  // bodies.csv as it was at the checkpoint: rows written after it are written again.
+  csv_.close();
+  std::error_code ec;
+  std::filesystem::resize_file(csv_path_, std::uintmax_t(resume_csv_size_), ec);
+  if (ec) throw OutputError("cannot truncate " + csv_path_.string() + ": " + ec.message());
+  csv_.open(csv_path_, std::ios::app);
+  if (!csv_) throw OutputError("cannot write " + csv_path_.string());
+  resume_csv_size_ = -1;
 }
 
 }  // namespace upf

@@ -82,6 +82,8 @@ class RigidBodySystem : public BodySystem {
   void open_outputs(const std::filesystem::path& out_dir, bool write_frames) override;
   std::vector<std::string> write_frame(const std::filesystem::path& out_dir, int frame,
                                        double time) override;
+  void save_state(StateWriter& out) const override;
+  void restore_state(StateReader& in) override;
 
   const std::vector<Body>& bodies() const { return bodies_; }
   // The state of body `b` now (its fluid force and torque: those of the last step).
@@ -92,7 +94,11 @@ class RigidBodySystem : public BodySystem {
   std::size_t guarded_particles() const { return guard_.corrected(); }
 
  private:
+  // A new Bullet world with the walls and every body at its start (constructor, restore_state).
+  void build_bullet();
   void read_states();
+  // Reopens bodies.csv for appending at its length at the checkpoint (resume_csv_size_).
+  void reopen_csv();
   void update_kinematic(double t, double dt);
   // Where body b stands at time t (a dynamic body: where Bullet has it now).
   BodyFrame frame_of(const Body& body, double t) const;
@@ -102,6 +108,7 @@ class RigidBodySystem : public BodySystem {
   std::vector<Body> bodies_;
   std::vector<StaticWall> walls_;
   double spacing_;
+  Eigen::Vector3d gravity_;
   std::unique_ptr<BulletWorld> bullet_;
   PenetrationGuard guard_;
   std::vector<const MeshInsideTest*> guarded_meshes_;  // per body; null: not guarded
@@ -109,6 +116,7 @@ class RigidBodySystem : public BodySystem {
   std::ofstream csv_;
   std::filesystem::path csv_path_;
   bool write_meshes_ = false;
+  std::int64_t resume_csv_size_ = -1;  // bodies.csv's length at a restored checkpoint
 };
 
 }  // namespace upf

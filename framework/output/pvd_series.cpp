@@ -2,6 +2,8 @@
 // https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html
 #include "framework/output/pvd_series.h"
 
+#include "framework/checkpoint/state_stream.h"
+
 #include <charconv>
 #include <cstddef>
 #include <ostream>
@@ -64,6 +66,27 @@ void PvdSeries::write() const {
   write_file_atomically(path_, [&](std::ostream& out) {
     out.write(xml.data(), static_cast<std::streamsize>(xml.size()));
   });
+}
+
+void PvdSeries::save_state(StateWriter& out) const {
+  out.put(std::uint64_t(entries_.size()));
+  for (const Entry& e : entries_) {
+    out.put(e.time);
+    out.put(std::uint64_t(e.part));
+    out.put_string(e.file);
+  }
+}
+
+void PvdSeries::restore_state(StateReader& in) {
+  const auto n = in.get<std::uint64_t>();
+  if (n > in.remaining()) in.fail("more frames than the file can hold");
+  entries_.resize(std::size_t(n));
+  for (Entry& e : entries_) {
+    e.time = in.get<double>();
+    e.part = std::size_t(in.get<std::uint64_t>());
+    e.file = in.get_string();
+  }
+  write();
 }
 
 }  // namespace upf

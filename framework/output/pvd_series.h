@@ -16,6 +16,9 @@
 
 namespace upf {
 
+class StateWriter;
+class StateReader;
+
 class PvdSeries {
  public:
   explicit PvdSeries(std::filesystem::path pvd_path);
@@ -42,6 +45,10 @@ class PvdSeries {
   void write() const;
 
   const std::filesystem::path& path() const { return path_; }
+
+  // Checkpoints: the entries; restore_state rewrites the .pvd with them.
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
 
  private:
   struct Entry {

@@ -1,5 +1,7 @@
 #include "framework/particles/particles.h"
 
+#include "framework/checkpoint/state_stream.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -131,6 +133,72 @@ void Particles::snapshot_into(Particles& into) const {
   for (const auto& [name, f] : vectors_)
     if (f.exported) into.vectors_[name] = f;
   into.next_id_ = next_id_;
+}
+
+namespace {
+
+template <class T>
+void save_fields(StateWriter& out, const std::map<std::string, Field<T>>& fields) {
+  out.put(std::uint64_t(fields.size()));
+  for (const auto& [name, f] : fields) {
+    out.put_string(name);
+    out.put(std::uint8_t(f.exported));
+    out.put_vector(f.values);
+  }
+}
+
+template <class T>
+void restore_fields(StateReader& in, std::map<std::string, Field<T>>& fields, std::size_t n) {
+  const auto count = in.get<std::uint64_t>();
+  in.expect(count == fields.size(), "the number of particle fields (" + std::to_string(count) +
+                                        " saved, " + std::to_string(fields.size()) + " here)");
+  for (std::uint64_t k = 0; k < count; ++k) {
+    const std::string name = in.get_string();
+    auto it = fields.find(name);
+    in.expect(it != fields.end(), "particle field '" + name + "'");
+    it->second.exported = in.get<std::uint8_t>() != 0;
+    in.get_vector(it->second.values);
+    in.expect(it->second.values.size() == n, "the length of particle field '" + name + "'");
+  }
+}
+
+}  // namespace
+
+void Particles::save_state(StateWriter& out) const {
+  out.section("particles");
+  out.put(next_id_);
+  out.put_vector(position);
+  out.put_vector(velocity);
+  out.put_vector(mass);
+  out.put_vector(type);
+  out.put_vector(material);
+  out.put_vector(id);
+  out.put_vector(body);
+  out.put_vector(boundary_volume);
+  save_fields(out, scalars_);
+  save_fields(out, vectors_);
+}
+
+void Particles::restore_state(StateReader& in) {
+  in.section("particles");
+  const auto next_id = in.get<ParticleId>();
+  in.expect(next_id == next_id_, "the particle id count (" + std::to_string(next_id) + " saved, " +
+                                     std::to_string(next_id_) + " here)");
+  in.get_vector(position);
+  const std::size_t n = position.size();
+  in.get_vector(velocity);
+  in.get_vector(mass);
+  in.get_vector(type);
+  in.get_vector(material);
+  in.get_vector(id);
+  in.get_vector(body);
+  in.get_vector(boundary_volume);
+  const bool sizes = velocity.size() == n && mass.size() == n && type.size() == n &&
+                     material.size() == n && id.size() == n && body.size() == n &&
+                     boundary_volume.size() == n;
+  in.expect(sizes, "the particle arrays' lengths");
+  restore_fields(in, scalars_, n);
+  restore_fields(in, vectors_, n);
 }
 
 }  // namespace upf

@@ -16,6 +16,9 @@
 
 namespace upf {
 
+class StateWriter;
+class StateReader;
+
 using ParticleId = std::uint32_t;
 using MaterialId = std::uint16_t;
 using BodyId = std::int32_t;
@@ -70,6 +73,11 @@ class Particles {
 
   // Largest stable id handed out so far plus one.
   ParticleId id_bound() const { return next_id_; }
+
+  // Checkpoints: every array, every field (exported or not) and the id counter. restore_state
+  // expects the fields this world's solvers made (same names): anything else is another run.
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
 
  private:
   // new[i] = old[order[i]] for i < order.size() in every array, sizes unchanged.

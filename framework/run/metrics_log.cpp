@@ -18,6 +18,29 @@ std::ofstream open_log(const std::filesystem::path& path) {
 void check(const std::ofstream& out, const std::filesystem::path& path) {
   if (!out) throw OutputError("writing " + path.string() + " failed (disk full?)");
 }
+
+// The log's length after a flush, for a checkpoint.
+void save_length(StateWriter& out, std::ofstream& log, const std::filesystem::path& path) {
+  log.flush();
+  check(log, path);
+  out.put(std::uint64_t(std::filesystem::file_size(path)));
+}
+
+// Cuts the log back to its length at the checkpoint and appends from there.
+void restore_length(StateReader& in, std::ofstream& log, const std::filesystem::path& path) {
+  const auto length = in.get<std::uint64_t>();
+  log.close();
+  std::error_code ec;
+  const auto now = std::filesystem::file_size(path, ec);
+  if (ec || now < length)
+    in.fail(path.string() + " is shorter than at the checkpoint (" + std::to_string(length) +
+            " bytes)");
+  std::filesystem::resize_file(path, length, ec);
+  if (ec) throw OutputError("cannot truncate " + path.string() + ": " + ec.message());
+  log.open(path, std::ios::app);
+  if (!log) throw OutputError("cannot write " + path.string());
+  log.precision(9);
+}
 }  // namespace
 
 double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
@@ -26,7 +49,9 @@ double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
   });
 }
 
-MetricsLog::MetricsLog(const std::filesystem::path& path) : path_(path), out_(open_log(path)) {}
+MetricsLog::MetricsLog(const std::filesystem::path& path, bool resuming) : path_(path) {
+  if (!resuming) out_ = open_log(path);
+}
 
 void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
   if (stages_.empty()) {  // the header follows the stages the solvers reported on step 1
@@ -50,13 +75,38 @@ void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
   out_ << ',' << r.total_ms << '\n';
 }
 
+void MetricsLog::save_state(StateWriter& out) {
+  out.put(std::uint64_t(stages_.size()));
+  for (const auto& s : stages_) out.put_string(s);
+  save_length(out, out_, path_);
+}
+
+void MetricsLog::restore_state(StateReader& in) {
+  const auto n = in.get<std::uint64_t>();
+  if (n > in.remaining()) in.fail("more metrics columns than the file can hold");
+  stages_.resize(std::size_t(n));
+  for (auto& s : stages_) s = in.get_string();
+  restore_length(in, out_, path_);
+}
+
+void ProbeLog::save_state(StateWriter& out) {
+  save_length(out, out_, path_);
+}
+
+void ProbeLog::restore_state(StateReader& in) {
+  restore_length(in, out_, path_);
+}
+
 void MetricsLog::flush() {
   out_.flush();
   check(out_, path_);
 }
 
-ProbeLog::ProbeLog(const std::filesystem::path& path, const std::vector<std::string>& names)
-    : path_(path), out_(open_log(path)) {
+ProbeLog::ProbeLog(const std::filesystem::path& path, const std::vector<std::string>& names,
+                   bool resuming)
+    : path_(path) {
+  if (resuming) return;
+  out_ = open_log(path);
   out_ << 't';
   for (const auto& n : names) out_ << ',' << n;
   out_ << '\n';

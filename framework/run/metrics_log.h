@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/checkpoint/state_stream.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -18,11 +19,16 @@ struct StepMetrics {
   std::size_t count_by_type[kParticleTypeCount] = {};
 };
 
+// Both logs start a new file, or (restore_state, for a resumed run) go on from the length the
+// file had at the checkpoint: rows written after it are dropped and written again.
 class MetricsLog {
  public:
-  explicit MetricsLog(const std::filesystem::path& path);
+  // `resuming`: the file is left alone until restore_state opens it.
+  explicit MetricsLog(const std::filesystem::path& path, bool resuming = false);
   void add(const StepMetrics& m, const StepReport& r);
   void flush();
+  void save_state(StateWriter& out);
+  void restore_state(StateReader& in);
 
  private:
   std::filesystem::path path_;
@@ -32,8 +38,11 @@ class MetricsLog {
 
 class ProbeLog {
  public:
-  ProbeLog(const std::filesystem::path& path, const std::vector<std::string>& names);
+  ProbeLog(const std::filesystem::path& path, const std::vector<std::string>& names,
+           bool resuming = false);
   void add(double time, const std::vector<double>& values);
+  void save_state(StateWriter& out);
+  void restore_state(StateReader& in);
 
  private:
   std::filesystem::path path_;

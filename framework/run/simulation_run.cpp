@@ -4,7 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 
+#include "framework/checkpoint/checkpoint_file.h"
+#include "framework/checkpoint/state_stream.h"
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
 #include "framework/output/atomic_file.h"
@@ -79,6 +82,14 @@ class FrameWriter {
     ++frames_;
   }
   int frames() const { return frames_; }
+  void save_state(StateWriter& out) const {
+    out.put(std::int32_t(frames_));
+    series_.save_state(out);
+  }
+  void restore_state(StateReader& in) {
+    frames_ = in.get<std::int32_t>();
+    series_.restore_state(in);
+  }
 
  private:
   std::filesystem::path out_dir_;
@@ -121,11 +132,77 @@ void write_summary(const std::filesystem::path& path, const SceneDescription& sc
   write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
+// The figures a run adds up step by step for its summary, kept across checkpoints.
+struct RunTotals {
+  std::vector<double> step_ms;
+  std::vector<std::pair<std::string, std::vector<double>>> stages;
+  double sum_dt = 0, sum_iterations = 0, sum_avg_error = 0;
+  double wall_seconds_before = 0;  // spent by the runs this one resumes
+
+  void add_stage(const std::string& name, double ms) {
+    for (auto& [n, v] : stages)
+      if (n == name) {
+        v.push_back(ms);
+        return;
+      }
+    stages.push_back({name, {ms}});
+  }
+  void save_state(StateWriter& out, const RunResult& r, double wall_seconds) const {
+    out.put_vector(step_ms);
+    out.put(std::uint64_t(stages.size()));
+    for (const auto& [name, v] : stages) {
+      out.put_string(name);
+      out.put_vector(v);
+    }
+    out.put(sum_dt);
+    out.put(sum_iterations);
+    out.put(sum_avg_error);
+    out.put(wall_seconds);
+    out.put(std::int32_t(r.max_iterations));
+    out.put(r.max_density_error);
+    out.put(std::uint64_t(r.final_probes.size()));
+    for (const auto& [name, value] : r.final_probes) {
+      out.put_string(name);
+      out.put(value);
+    }
+  }
+  void restore_state(StateReader& in, RunResult& r) {
+    in.get_vector(step_ms);
+    const auto n = in.get<std::uint64_t>();
+    if (n > in.remaining()) in.fail("more stages than the file can hold");
+    stages.resize(std::size_t(n));
+    for (auto& [name, v] : stages) {
+      name = in.get_string();
+      in.get_vector(v);
+    }
+    sum_dt = in.get<double>();
+    sum_iterations = in.get<double>();
+    sum_avg_error = in.get<double>();
+    wall_seconds_before = in.get<double>();
+    r.max_iterations = in.get<std::int32_t>();
+    r.max_density_error = in.get<double>();
+    const auto probes = in.get<std::uint64_t>();
+    if (probes > in.remaining()) in.fail("more probes than the file can hold");
+    r.final_probes.resize(std::size_t(probes));
+    for (auto& [name, value] : r.final_probes) {
+      name = in.get_string();
+      value = in.get<double>();
+    }
+  }
+};
+
 }  // namespace
+
+std::string read_checkpoint_header(const std::filesystem::path& run_dir) {
+  StateReader in = read_checkpoint(run_dir / kCheckpointFileName);
+  in.section("header");
+  return in.get_string();
+}
 
 RunResult run_simulation(const SceneDescription& scene, const Registry& registry,
                          const RunOptions& options) {
   ensure_directory(options.out_dir);
+  const std::filesystem::path checkpoint_path = options.out_dir / kCheckpointFileName;
   auto world = build_world(scene, registry, options.threads);
   world->prepare();
   const Particles& particles = world->particles();
@@ -139,11 +216,20 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   result.total_particles = particles.size();
   result.threads = world->executor().threads();
 
+  // A resumed run restores the world before the outputs open: body systems then append to their
+  // files from where the checkpoint left them instead of starting them again.
+  std::optional<StateReader> resume;
+  if (options.resume) {
+    resume.emplace(read_checkpoint(checkpoint_path));
+    resume->section("header");
+    (void)resume->get_string();
+    world->restore_state(*resume);
+  }
   FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames, *world);
-  MetricsLog metrics(options.out_dir / "metrics.csv");
+  MetricsLog metrics(options.out_dir / "metrics.csv", options.resume);
   std::vector<std::string> probe_names;
   for (const auto& p : scene.probes) probe_names.push_back(p.name);
-  ProbeLog probe_log(options.out_dir / "probes.csv", probe_names);
+  ProbeLog probe_log(options.out_dir / "probes.csv", probe_names, options.resume);
   auto probe_values = [&](const Particles& state) {
     std::vector<double> values;
     for (const auto& p : scene.probes) values.push_back(evaluate_probe(p, state, spacing));
@@ -160,40 +246,68 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   };
 
   const double frame_interval = 1.0 / scene.output.fps;
-  int next_frame = 1;
-  record_frame(particles, 0.0);
+  std::int32_t next_frame = 1;
+  RunTotals totals;
+  if (resume) {
+    resume->section("run");
+    next_frame = resume->get<std::int32_t>();
+    frames.restore_state(*resume);
+    metrics.restore_state(*resume);
+    probe_log.restore_state(*resume);
+    totals.restore_state(*resume, result);
+    if (!resume->at_end()) resume->fail("unread bytes at the end");
+  } else {
+    record_frame(particles, 0.0);
+  }
 
   Stopwatch wall;
-  std::vector<double> step_ms;
-  std::vector<std::pair<std::string, std::vector<double>>> stages;
-  double sum_dt = 0, sum_iterations = 0, sum_avg_error = 0;
-  auto add_stage = [&](const std::string& name, double ms) {
-    for (auto& [n, v] : stages)
-      if (n == name) {
-        v.push_back(ms);
-        return;
-      }
-    stages.push_back({name, {ms}});
+  auto wall_seconds = [&] { return totals.wall_seconds_before + wall.elapsed_ms() / 1000.0; };
+  // Writes the checkpoint, then continues from exactly what it wrote, as a resumed run would.
+  auto write_checkpoint_now = [&] {
+    StateWriter out;
+    out.section("header");
+    out.put_string(options.checkpoint_header);
+    world->save_state(out);
+    out.section("run");
+    out.put(next_frame);
+    frames.save_state(out);
+    metrics.save_state(out);
+    probe_log.save_state(out);
+    totals.save_state(out, result, wall_seconds());
+    write_checkpoint(checkpoint_path, out.bytes());
+    ++result.checkpoints;
+    result.checkpoint_file = checkpoint_path;
+    StateReader again(out.bytes(), checkpoint_path.string());
+    again.section("header");
+    (void)again.get_string();
+    world->restore_state(again);
   };
+  const CheckpointPolicy& policy = options.checkpoint;
+  auto clock_now = [&] { return policy.wall_clock ? wall.elapsed_ms() / 1000.0 : world->time(); };
+  // Simulated-time checkpoints fall on multiples of the interval, so a resumed run keeps the
+  // schedule of the one it continues.
+  double next_checkpoint =
+      policy.wall_clock ? policy.every
+                        : (std::floor(world->time() / policy.every + 1e-9) + 1) * policy.every;
 
   auto finish = [&] {
-    result.wall_seconds = wall.elapsed_ms() / 1000.0;
+    result.wall_seconds = wall_seconds();
     result.steps = world->step_count();
     result.simulated_time = world->time();
     result.frames = frames.frames();
     // Means over the steps that were recorded: an unstable run's failed step counts in
     // `steps` but has no figures.
-    if (const double recorded = double(step_ms.size()); recorded > 0) {
-      result.mean_dt = sum_dt / recorded;
-      result.mean_iterations = sum_iterations / recorded;
-      result.mean_avg_density_error = sum_avg_error / recorded;
+    if (const double recorded = double(totals.step_ms.size()); recorded > 0) {
+      result.mean_dt = totals.sum_dt / recorded;
+      result.mean_iterations = totals.sum_iterations / recorded;
+      result.mean_avg_density_error = totals.sum_avg_error / recorded;
     }
     double compute_s = 0;
-    for (double ms : step_ms) compute_s += ms / 1000.0;
+    for (double ms : totals.step_ms) compute_s += ms / 1000.0;
     if (compute_s > 0)
       result.fluid_particle_steps_per_second =
           double(result.liquid_particles) * double(result.steps) / compute_s;
-    write_summary(options.out_dir / "summary.json", scene, result, step_ms, stages);
+    write_summary(options.out_dir / "summary.json", scene, result, totals.step_ms, totals.stages);
   };
 
   try {
@@ -209,12 +323,12 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
       for (int t = 0; t < kParticleTypeCount; ++t)
         m.count_by_type[t] = particles.count(static_cast<ParticleType>(t));
       metrics.add(m, r);
-      step_ms.push_back(r.total_ms);
-      add_stage("neighbours", r.neighbour_ms);
-      for (const auto& [name, ms] : r.solver.stage_ms) add_stage(name, ms);
-      sum_dt += dt;
-      sum_iterations += r.solver.iterations;
-      sum_avg_error += r.solver.avg_density_error;
+      totals.step_ms.push_back(r.total_ms);
+      totals.add_stage("neighbours", r.neighbour_ms);
+      for (const auto& [name, ms] : r.solver.stage_ms) totals.add_stage(name, ms);
+      totals.sum_dt += dt;
+      totals.sum_iterations += r.solver.iterations;
+      totals.sum_avg_error += r.solver.avg_density_error;
       result.max_iterations = std::max(result.max_iterations, r.solver.iterations);
       result.max_density_error = std::max(result.max_density_error, r.solver.max_density_error);
 
@@ -226,6 +340,17 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
       if (options.on_step) options.on_step(*world);
       if (options.on_progress)
         options.on_progress({world->time(), end, world->step_count(), wall.elapsed_ms() / 1000.0});
+      if (at_end) break;
+      if (options.stop_requested && options.stop_requested()) {
+        write_checkpoint_now();
+        result.status = "interrupted";
+        finish();
+        return result;
+      }
+      if (policy.every > 0 && clock_now() >= next_checkpoint - 1e-12) {
+        write_checkpoint_now();
+        while (next_checkpoint <= clock_now() + 1e-12) next_checkpoint += policy.every;
+      }
     }
   } catch (const InstabilityError& e) {
     // The state before the failed step is the last good one: keep it on disk, then report.

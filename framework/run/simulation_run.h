@@ -22,6 +22,12 @@ struct RunProgress {
   double wall_seconds = 0;
 };
 
+// When a run writes checkpoints (checkpoint_file.h) into its output directory.
+struct CheckpointPolicy {
+  double every = 0;        // s between checkpoints; 0: only when stopped (stop_requested)
+  bool wall_clock = true;  // wall-clock seconds, else simulated seconds
+};
+
 struct RunOptions {
   std::filesystem::path out_dir = "out";
   int threads = 0;                 // 0: OpenMP's default
@@ -32,10 +38,18 @@ struct RunOptions {
   // False: an instability ends the run with status "unstable" instead of throwing, so a
   // comparison keeps the figures of the steps that did succeed.
   bool throw_on_instability = true;
+  CheckpointPolicy checkpoint;
+  // Kept at the head of every checkpoint for the caller: the command line stores the scene and
+  // its options there, so `upf run --resume DIR` needs nothing else (read_checkpoint_header).
+  std::string checkpoint_header;
+  // Continue the run whose checkpoint is in out_dir, with the scene it was made from.
+  bool resume = false;
+  // Polled after every step: true ends the run after a checkpoint (status "interrupted").
+  std::function<bool()> stop_requested;
 };
 
 struct RunResult {
-  std::string status = "completed";  // or "unstable"
+  std::string status = "completed";  // or "unstable", or "interrupted" (resumable)
   std::string failure;
   std::uint64_t steps = 0;
   double simulated_time = 0;  // unstable: the time the failed step reached
@@ -51,7 +65,13 @@ struct RunResult {
   double max_density_error = 0;
   double fluid_particle_steps_per_second = 0;
   std::vector<std::pair<std::string, double>> final_probes;
+  int checkpoints = 0;                    // written by this process
+  std::filesystem::path checkpoint_file;  // the last one written, if any
 };
+
+// The caller's header of the checkpoint in `run_dir` (see RunOptions::checkpoint_header); throws
+// InputError when there is none, or it is of another build or damaged.
+std::string read_checkpoint_header(const std::filesystem::path& run_dir);
 
 RunResult run_simulation(const SceneDescription& scene, const Registry& registry,
                          const RunOptions& options);

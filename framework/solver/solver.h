@@ -13,6 +13,8 @@
 namespace upf {
 
 class World;
+class StateWriter;
+class StateReader;
 
 // What a solver reports after a step, for metrics and comparisons.
 struct SolverStats {
@@ -32,6 +34,10 @@ class Solver {
   virtual Real max_time_step(const World& world) const = 0;
   virtual void step(World& world, Real dt) = 0;
   virtual SolverStats stats() const = 0;
+  // Checkpoints (World::save_state): what the solver keeps from one step to the next outside the
+  // particle fields, which the world saves itself. Stateless solvers keep the defaults.
+  virtual void save_state(StateWriter&) const {}
+  virtual void restore_state(StateReader&) {}
 };
 
 }  // namespace upf

@@ -21,6 +21,8 @@
 namespace upf {
 
 class World;
+class StateWriter;
+class StateReader;
 
 // The per-particle force (N) that fluids exert on boundary particles during a step: a vector
 // field created by a body system that needs it, zeroed by the world before the solvers run.
@@ -44,6 +46,12 @@ class BodySystem {
   virtual void open_outputs(const std::filesystem::path& out_dir, bool write_frames) = 0;
   virtual std::vector<std::string> write_frame(const std::filesystem::path& out_dir, int frame,
                                                double time) = 0;
+
+  // Checkpoints (World::save_state): the bodies' state and where their outputs stand. A restore
+  // happens after prepare() and open_outputs(), in a fresh world or in the one that saved (a run
+  // continues from exactly what it saved, as a resumed run does).
+  virtual void save_state(StateWriter&) const {}
+  virtual void restore_state(StateReader&) {}
 };
 
 }  // namespace upf

@@ -1,5 +1,7 @@
 #include "framework/world/world.h"
 
+#include "framework/checkpoint/state_stream.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -151,6 +153,46 @@ void World::check_stability() const {
                            double(v.x + v.y + v.z), 0);
   throw InstabilityError(step_count_, time_, particles_.id[bad], "speed [m/s]",
                          std::sqrt(double(squared_norm(v))), settings_.max_speed);
+}
+
+void World::save_state(StateWriter& out) const {
+  out.section("world");
+  out.put(time_);
+  out.put(step_count_);
+  out.put(std::uint64_t(solvers_.size()));
+  out.put(std::uint64_t(bodies_.size()));
+  particles_.save_state(out);
+  for (const auto& s : solvers_) {
+    out.section(s->name());
+    s->save_state(out);
+  }
+  for (const auto& b : bodies_) {
+    out.section(b->name());
+    b->save_state(out);
+  }
+}
+
+void World::restore_state(StateReader& in) {
+  if (!prepared_) throw std::logic_error("World::prepare() must run before restore_state()");
+  in.section("world");
+  time_ = in.get<double>();
+  step_count_ = in.get<std::uint64_t>();
+  in.expect(in.get<std::uint64_t>() == solvers_.size(), "the number of solvers");
+  in.expect(in.get<std::uint64_t>() == bodies_.size(), "the number of body systems");
+  particles_.restore_state(in);
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    in.expect(int(particles_.type[i]) < kParticleTypeCount, "particle type");
+    in.expect(particles_.material[i] < materials_.size(), "particle material");
+  }
+  for (const auto& s : solvers_) {
+    in.section(s->name());
+    s->restore_state(in);
+  }
+  for (const auto& b : bodies_) {
+    in.section(b->name());
+    b->restore_state(in);
+  }
+  particles_.snapshot_into(last_good_);
 }
 
 }  // namespace upf

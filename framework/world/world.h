@@ -70,6 +70,12 @@ class World {
   // Advances by dt. Throws InstabilityError (with the last good state kept) when it blows up.
   void step(double dt);
 
+  // Checkpoints: time, step count, particles, then each solver's and body system's own state.
+  // restore_state runs after prepare() on a world built from the same scene; a checkpoint of
+  // another scene is an InputError.
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
+
   double time() const { return time_; }
   std::uint64_t step_count() const { return step_count_; }
   const StepReport& last_step() const { return report_; }

@@ -138,4 +138,23 @@ void DemContactList::build_reverse(const Particles& p, const OwnedParticles& own
   });
 }
 
+void DemContactList::save_state(StateWriter& out) const {
+  out.put_vector(key_);
+  out.put_vector(xi_);
+  out.put_vector(last_begin_by_id_);
+  out.put_vector(last_count_by_id_);
+}
+
+void DemContactList::restore_state(StateReader& in) {
+  *this = DemContactList{};
+  in.get_vector(key_);
+  in.get_vector(xi_);
+  in.get_vector(last_begin_by_id_);
+  in.get_vector(last_count_by_id_);
+  bool fits = xi_.size() == key_.size() && last_begin_by_id_.size() == last_count_by_id_.size();
+  for (std::size_t id = 0; fits && id < last_begin_by_id_.size(); ++id)
+    fits = std::uint64_t(last_begin_by_id_[id]) + last_count_by_id_[id] <= key_.size();
+  in.expect(fits, "the DEM contact springs");
+}
+
 }  // namespace upf

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "framework/checkpoint/state_stream.h"
 #include "framework/core/vec3.h"
 #include "framework/executors/cpu/cpu_executor.h"
 #include "framework/neighbours/neighbour_list.h"
@@ -86,6 +87,10 @@ class DemContactList {
   const Vec3& partner_rolling(std::uint32_t k) const { return partner_rolling_[k]; }
 
   std::size_t size() const { return partner_.size(); }
+
+  // Checkpoints: the springs and whose they are (the candidates are listed again next step).
+  void save_state(StateWriter& out) const;
+  void restore_state(StateReader& in);
 
  private:
   // Whether grain i holds the pair with neighbour j (see the header comment).

@@ -135,6 +135,16 @@ void DemSolver::step(World& world, Real dt) {
   stats_.stage_ms = {{"dem_contacts", contacts_ms}, {"dem_integration", integrate_ms}};
 }
 
+void DemSolver::save_state(StateWriter& out) const {
+  out.put(std::uint8_t(primed_));
+  contacts_.save_state(out);
+}
+
+void DemSolver::restore_state(StateReader& in) {
+  primed_ = in.get<std::uint8_t>() != 0;
+  contacts_.restore_state(in);
+}
+
 void DemSolver::interpolate_fluid(World& world) {
   const Particles& p = world.particles();
   const NeighbourList& liquid = world.neighbours(grain_liquid_list_);

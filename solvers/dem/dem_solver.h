@@ -50,6 +50,8 @@ class DemSolver : public Solver {
   Real max_time_step(const World& world) const override;
   void step(World& world, Real dt) override;
   SolverStats stats() const override { return stats_; }
+  void save_state(StateWriter& out) const override;
+  void restore_state(StateReader& in) override;
 
   // The longest sub-step the materials allow, s.
   Real substep() const { return substep_; }

@@ -1,0 +1,31 @@
+// Checkpoint files: the full state of a run (checkpoint_state in simulation_run.cpp) behind a
+// header that names the format and the build, and a checksum of the payload, written atomically
+// (write to a temporary file, then rename) so a kill at any moment leaves the previous checkpoint
+// whole. Reading checks the magic, format, build and checksum first: a checkpoint of another
+// version or a damaged file is an InputError naming the file and what is wrong.
+//
+// Layout: "UPFCKPT\n", format (u32), build id (string), payload size (u64), FNV-1a 64 of the
+// payload (u64), payload.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "framework/checkpoint/state_stream.h"
+
+namespace upf {
+
+inline constexpr std::uint32_t kCheckpointFormat = 1;
+inline constexpr const char* kCheckpointFileName = "checkpoint.upfck";
+
+// "upf 0.1.0, Real float": runs resume only in the build flavour that wrote them.
+std::string checkpoint_build_id();
+
+// Throws OutputError when it cannot be written (the previous checkpoint stays).
+void write_checkpoint(const std::filesystem::path& path, const std::vector<char>& payload);
+// The payload, checked; throws InputError (file missing, other format or build, damaged).
+StateReader read_checkpoint(const std::filesystem::path& path);
+
+}  // namespace upf
