@@ -1,7 +1,7 @@
 # Front doors. Both install what is missing first (scripts/install-deps), then build with CMake.
 #   make demo   build Release and run samples/dam_break.json into out/dam_break/
 #   make test   build Release and run every test with ctest
-#   make asan   build with ASan+UBSan and run the unit tests
+#   make asan   build with ASan+UBSan (clang) and run the unit tests and a short run of each fuzz target
 JOBS ?= $(shell nproc)
 
 .PHONY: all deps build demo test asan bench clean
@@ -23,7 +23,7 @@ test: build
 
 asan: deps
 	cmake --preset asan
-	cmake --build --preset asan -j $(JOBS) --target upf_unit_tests
+	cmake --build --preset asan -j $(JOBS) --target upf_unit_tests fuzz_scene fuzz_mesh
 	ctest --preset asan -j $(JOBS)
 
 bench: build

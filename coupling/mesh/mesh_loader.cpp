@@ -1,5 +1,7 @@
 #include "coupling/mesh/mesh_loader.h"
 
+#include "coupling/mesh/isolated_read.h"
+
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -173,12 +175,18 @@ TriangleMesh load_mesh(const std::filesystem::path& file, const MeshTransform& t
                        const std::string& where) {
   require_valid_transform(transform, where.empty() ? file.string() : where);
   require_readable_file(file, where);
-  Assimp::Importer importer;
-  require_supported_format(importer, file, where);
-  const aiScene* scene = read_with_assimp(importer, file, where);
-  TriangleMesh mesh;
-  if (scene->mRootNode && !(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-    mesh = merge_scene(*scene, file.string(), where);
+  require_supported_format(Assimp::Importer(), file, where);
+  // assimp in a child process: it aborts on some malformed files (isolated_read.h).
+  TriangleMesh mesh = read_isolated(
+      [&] {
+        Assimp::Importer importer;
+        const aiScene* scene = read_with_assimp(importer, file, where);
+        TriangleMesh merged;
+        if (scene->mRootNode && !(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+          merged = merge_scene(*scene, file.string(), where);
+        return merged;
+      },
+      file.string(), where);
   mesh.source = file.string();
   require_usable_surface(mesh, where);  // before the transform: a NaN in the file shows as such
   apply_transform(mesh, transform);

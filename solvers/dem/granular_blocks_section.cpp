@@ -1,5 +1,6 @@
 #include "solvers/dem/granular_blocks_section.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -86,7 +87,10 @@ std::shared_ptr<const SceneSectionData> read_blocks(const json& node, const std:
     block.box = Box{*lo, *hi};
     const double pitch = 2 * block.radius;
     for (int a = 0; a < 3; ++a) {
-      block.count[std::size_t(a)] = (long long)std::floor(((*hi)[a] - (*lo)[a]) / pitch + 1e-9);
+      // Counted in double first: an inverted or astronomically large block must not overflow
+      // the integer (found by tests/fuzz/fuzz_scene.cpp); the memory estimate rejects big ones.
+      const double grains = std::floor(((*hi)[a] - (*lo)[a]) / pitch + 1e-9);
+      block.count[std::size_t(a)] = grains >= 1 ? (long long)std::min(grains, 1e15) : 0;
       if (block.count[std::size_t(a)] < 1) {
         in.problem(
             JsonInput::child(where, "max"),

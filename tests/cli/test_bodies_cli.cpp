@@ -90,3 +90,18 @@ TEST_F(Bodies, RunWritesBodiesCsvAndBodyMeshesInThePvdSeries) {
 
 }  // namespace
 }  // namespace upf::cli_test
+
+namespace upf::cli_test {
+namespace {
+
+// Found by tests/fuzz/fuzz_scene.cpp: a granular block whose min lies 1e20 m beyond its max made
+// the grain count overflow its integer (undefined behaviour) before the check could reject it.
+TEST_F(Cli, InvertedHugeGranularBlockIsBadInput) {
+  std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / "sand_pile.json");
+  auto doc = nlohmann::json::parse(in);
+  doc["granular_blocks"][0]["min"][0] = 1e20;
+  expect_rejected(doc, {"/granular_blocks/0/max", "thinner than one grain diameter"});
+}
+
+}  // namespace
+}  // namespace upf::cli_test

@@ -1,0 +1,116 @@
+#include "coupling/mesh/isolated_read.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <exception>
+#include <vector>
+
+#include "coupling/mesh/mesh_error.h"
+#include "framework/checkpoint/state_stream.h"
+#include "framework/core/errors.h"
+
+namespace upf {
+
+namespace {
+
+enum class Outcome : std::uint8_t { Mesh = 0, BadInput = 1, Failure = 2 };
+
+void write_all(int fd, const std::vector<char>& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    done += std::size_t(n);
+  }
+}
+
+std::vector<char> read_all(int fd) {
+  std::vector<char> bytes;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    bytes.insert(bytes.end(), buffer, buffer + n);
+  }
+  return bytes;
+}
+
+[[noreturn]] void child(int fd, const std::function<TriangleMesh()>& read) {
+  StateWriter out;
+  try {
+    const TriangleMesh mesh = read();
+    out.put(Outcome::Mesh);
+    std::vector<double> xyz;
+    xyz.reserve(mesh.vertices.size() * 3);
+    for (const auto& v : mesh.vertices) xyz.insert(xyz.end(), {v.x(), v.y(), v.z()});
+    out.put_vector(xyz);
+    out.put_vector(mesh.triangles);
+  } catch (const InputError& e) {
+    out.put(Outcome::BadInput);
+    const InputProblem first =
+        e.problems().empty() ? InputProblem{"", e.what()} : e.problems().front();
+    out.put_string(first.where);
+    out.put_string(first.message);
+  } catch (const std::exception& e) {
+    out.put(Outcome::Failure);
+    out.put_string(e.what());
+  }
+  write_all(fd, out.bytes());
+  ::close(fd);
+  ::_exit(0);  // no atexit handlers, no destructors of the parent's objects
+}
+
+}  // namespace
+
+TriangleMesh read_isolated(const std::function<TriangleMesh()>& read, const std::string& file,
+                           const std::string& where) {
+  int fds[2];
+  if (::pipe(fds) != 0) return read();  // no pipe: read in this process, as before
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return read();
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    child(fds[1], read);
+  }
+  ::close(fds[1]);
+  std::vector<char> bytes = read_all(fds[0]);
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFSIGNALED(status))
+    throw mesh_error(file, where,
+                     "the mesh reader (assimp) crashed on it (signal " +
+                         std::to_string(WTERMSIG(status)) + ", " + strsignal(WTERMSIG(status)) +
+                         "): the file is malformed");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
+    throw mesh_error(file, where, "the mesh reader stopped without an answer");
+  StateReader in(std::move(bytes), file);
+  {
+    const auto outcome = in.get<Outcome>();
+    if (outcome == Outcome::BadInput) {
+      std::string at = in.get_string();
+      throw InputError(std::move(at), in.get_string());
+    }
+    if (outcome == Outcome::Failure) throw mesh_error(file, where, in.get_string());
+    TriangleMesh mesh;
+    std::vector<double> xyz;
+    in.get_vector(xyz);
+    for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+      mesh.vertices.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+    in.get_vector(mesh.triangles);
+    return mesh;
+  }
+}
+
+}  // namespace upf
