@@ -42,6 +42,9 @@ std::vector<char> read_all(int fd) {
 }
 
 [[noreturn]] void child(int fd, const std::function<TriangleMesh()>& read) {
+  // A crash in the child is the parent's to report: no handler (a sanitizer's, a fuzzer's) of
+  // the parent's may turn it into a report of its own.
+  for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(s, SIG_DFL);
   StateWriter out;
   try {
     const TriangleMesh mesh = read();

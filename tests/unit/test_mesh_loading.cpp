@@ -175,6 +175,11 @@ TEST_F(MeshLoadingErrors, FileThatAbortsAssimpIsAnError) {
   expect_error(test_mesh("assimp_abort.off"), "crashed on it (signal 6");
 }
 
+// Also found by fuzz_mesh: an OFF file on which assimp's reader segfaults.
+TEST_F(MeshLoadingErrors, FileThatCrashesAssimpIsAnError) {
+  expect_error(test_mesh("assimp_segv.off"), "crashed on it (signal 11");
+}
+
 TEST_F(MeshLoadingErrors, NoFacesIsEmpty) {
   expect_error(test_mesh("empty.obj"), "contains no triangles");
 }
