@@ -52,6 +52,8 @@ int run_command(const RunArgs& args) {
     out_dir = args.resume;
     const std::string where = (out_dir / kCheckpointFileName).string();
     run = from_header(read_checkpoint_header(out_dir), where);
+    // --end may move the end: a stopped run can be taken further than first planned.
+    if (args.end_time) run.end_time = args.end_time;
     const nlohmann::json document = nlohmann::json::parse(run.scene_text, nullptr, false);
     if (document.is_discarded()) throw InputError(where, "the checkpoint's scene is not JSON");
     scene = read_scene(document, registry, run.scene_source);

@@ -1,7 +1,7 @@
 // upf: the command-line program. Thin: it parses arguments and calls the framework.
 //   upf run SCENE [--out DIR] [--threads N] [--end T] [--quiet] [--solver NAME]
 //           [--checkpoint-every 5m|0.5sim]
-//   upf run --resume DIR [--threads N]
+//   upf run --resume DIR [--threads N] [--end T]
 //   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
 //   upf validate SCENE...
 //   upf info
@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
       "seconds; bitwise reproducible even with rigid-body contacts). Ctrl-C always writes one");
   run->add_option("--resume", run_args.resume,
                   "continue the run in this output directory from its checkpoint, with the scene "
-                  "and options it was started with")
+                  "and options it was started with (--end may move its end)")
       ->excludes(scene_option)
       ->excludes(out_option)
       ->excludes(solver_option)
