@@ -144,6 +144,28 @@ TEST_F(Checkpoint, DamagedForeignOrMissingCheckpointsAreClearErrors) {
   EXPECT_NE(none.output.find("no checkpoint"), std::string::npos) << none.output;
 }
 
+// A checkpoint that cannot be written (here: a directory where its temporary file must go, as a
+// full disk fails the write) stops the run with exit code 1 naming the file; the checkpoint
+// before it stays whole and resumable, and the frames already written stay.
+TEST_F(Checkpoint, UnwritableCheckpointKeepsThePreviousOneAndTheFrames) {
+  const fs::path out = dir_ / "run";
+  const std::string scene = write(sample());
+  ASSERT_EQ(
+      run_upf("run " + scene + " --end 0.02 --checkpoint-every 0.01sim -q -o " + out.string()).code,
+      0);
+  const fs::path ck = out / "checkpoint.upfck";
+  const std::vector<char> before = bytes_of(ck);
+  fs::create_directory(out / "checkpoint.upfck.tmp");
+  const Result r = run_upf("run --resume " + out.string() + " --end 0.04 -q");
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find(ck.string()), std::string::npos) << r.output;
+  EXPECT_EQ(bytes_of(ck), before);
+  EXPECT_TRUE(fs::exists(out / "frames" / "frame_00000.vtp"));
+  fs::remove(out / "checkpoint.upfck.tmp");
+  const Result again = run_upf("run --resume " + out.string() + " --end 0.04 -q");
+  EXPECT_EQ(again.code, 0) << again.output;
+}
+
 TEST_F(Checkpoint, BadDurationIsRejectedBeforeRunning) {
   const Result r =
       run_upf("run " + write(sample()) + " --checkpoint-every 5 -o " + (dir_ / "run").string());
