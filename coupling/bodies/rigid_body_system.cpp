@@ -11,6 +11,7 @@
 #include "framework/core/errors.h"
 #include "framework/core/vec3_eigen.h"
 #include "framework/output/mesh_vtp_writer.h"
+#include "framework/output/resumed_log.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -401,12 +402,7 @@ void RigidBodySystem::restore_state(StateReader& in) {
 
 void RigidBodySystem::reopen_csv() {
   // bodies.csv as it was at the checkpoint: rows written after it are written again.
-  csv_.close();
-  std::error_code ec;
-  std::filesystem::resize_file(csv_path_, std::uintmax_t(resume_csv_size_), ec);
-  if (ec) throw OutputError("cannot truncate " + csv_path_.string() + ": " + ec.message());
-  csv_.open(csv_path_, std::ios::app);
-  if (!csv_) throw OutputError("cannot write " + csv_path_.string());
+  reopen_log_at(csv_, csv_path_, std::uintmax_t(resume_csv_size_));
   resume_csv_size_ = -1;
 }
 

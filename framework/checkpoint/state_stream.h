@@ -77,8 +77,8 @@ class StateReader {
   }
   std::string get_string();
 
-  // Throws unless `actual` == `expected`, naming what differs (the checkpoint does not belong to
-  // this scene).
+  // Throws unless `matches`, saying that `what` differs from this run's (the checkpoint
+  // belongs to another scene).
   void expect(bool matches, const std::string& what) const {
     if (!matches) fail(what + " does not match the scene: the checkpoint is of another run");
   }

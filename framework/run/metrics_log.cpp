@@ -4,6 +4,7 @@
 
 #include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
+#include "framework/output/resumed_log.h"
 
 namespace upf {
 
@@ -29,16 +30,12 @@ void save_length(StateWriter& out, std::ofstream& log, const std::filesystem::pa
 // Cuts the log back to its length at the checkpoint and appends from there.
 void restore_length(StateReader& in, std::ofstream& log, const std::filesystem::path& path) {
   const auto length = in.get<std::uint64_t>();
-  log.close();
   std::error_code ec;
   const auto now = std::filesystem::file_size(path, ec);
   if (ec || now < length)
     in.fail(path.string() + " is shorter than at the checkpoint (" + std::to_string(length) +
             " bytes)");
-  std::filesystem::resize_file(path, length, ec);
-  if (ec) throw OutputError("cannot truncate " + path.string() + ": " + ec.message());
-  log.open(path, std::ios::app);
-  if (!log) throw OutputError("cannot write " + path.string());
+  reopen_log_at(log, path, length);
   log.precision(9);
 }
 }  // namespace

@@ -191,12 +191,17 @@ struct RunTotals {
   }
 };
 
+// The caller's header that opens every checkpoint (RunOptions::checkpoint_header).
+std::string read_header(StateReader& in) {
+  in.section("header");
+  return in.get_string();
+}
+
 }  // namespace
 
 std::string read_checkpoint_header(const std::filesystem::path& run_dir) {
   StateReader in = read_checkpoint(run_dir / kCheckpointFileName);
-  in.section("header");
-  return in.get_string();
+  return read_header(in);
 }
 
 RunResult run_simulation(const SceneDescription& scene, const Registry& registry,
@@ -221,8 +226,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   std::optional<StateReader> resume;
   if (options.resume) {
     resume.emplace(read_checkpoint(checkpoint_path));
-    resume->section("header");
-    (void)resume->get_string();
+    (void)read_header(*resume);
     world->restore_state(*resume);
   }
   FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames, *world);
@@ -278,8 +282,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     ++result.checkpoints;
     result.checkpoint_file = checkpoint_path;
     StateReader again(out.bytes(), checkpoint_path.string());
-    again.section("header");
-    (void)again.get_string();
+    (void)read_header(again);
     world->restore_state(again);
   };
   const CheckpointPolicy& policy = options.checkpoint;
