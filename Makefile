@@ -1,5 +1,6 @@
 # Front doors. Both install what is missing first (scripts/install-deps), then build with CMake.
-#   make demo   build Release and run samples/dam_break.json into out/dam_break/
+#   make demo   build Release, run samples/dam_break.json into out/dam_break/ and draw its frames
+#               (out/dam_break/render/: a PNG per frame, and an MP4)
 #   make test   build Release and run every test with ctest
 #   make asan   build with ASan+UBSan (clang) and run the unit tests and a short run of each fuzz target
 JOBS ?= $(shell nproc)
@@ -16,7 +17,7 @@ build: deps
 	cmake --build --preset release -j $(JOBS)
 
 demo: build
-	./build/release/apps/upf/upf run samples/dam_break.json --out out/dam_break
+	./build/release/apps/upf/upf run samples/dam_break.json --out out/dam_break --render
 
 test: build
 	ctest --preset release -j $(JOBS)

@@ -1,6 +1,7 @@
 #include "app_registry.h"
 
 #include "coupling/bodies/bodies_section.h"
+#include "render/render_settings.h"
 
 #include "solvers/register_builtin_solvers.h"
 
@@ -10,6 +11,7 @@ Registry make_app_registry() {
   Registry registry;
   register_builtins(registry);
   register_coupling(registry);
+  render::register_render_section(registry);
   register_extensions(registry);
   return registry;
 }

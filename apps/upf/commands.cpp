@@ -68,6 +68,8 @@ int run_command(const RunArgs& args) {
     if (out_dir.empty()) out_dir = std::filesystem::path("out") / scene.name;
   }
   if (!run.solver.empty()) scene = with_solver(scene, registry, run.solver);
+  if (args.render && run.no_frames)
+    throw InputError("--render", "there are no frames to draw: the run has --no-frames");
   RunOptions options;
   options.out_dir = out_dir;
   options.threads = args.threads;
@@ -76,6 +78,7 @@ int run_command(const RunArgs& args) {
   if (!run.checkpoint_every.empty())
     options.checkpoint = parse_checkpoint_every(run.checkpoint_every);
   options.checkpoint_header = to_header(run);
+  options.scene_text = run.scene_text;
   options.resume = !args.resume.empty();
   InterruptSignal interrupt;
   options.stop_requested = [&] { return interrupt.requested(); };
@@ -104,6 +107,13 @@ int run_command(const RunArgs& args) {
       scene.name.c_str(), static_cast<unsigned long long>(r.steps), r.simulated_time,
       r.wall_seconds, r.liquid_particles, r.fluid_particle_steps_per_second, r.mean_iterations);
   std::printf("output: %s (particles.pvd, metrics.csv, probes.csv, summary.json)\n", out.c_str());
+  if (args.render) {
+    RenderArgs render = args.render_args;
+    render.run_dir = out;
+    render.threads = args.threads;
+    render.quiet = args.quiet;
+    return render_command(render);
+  }
   return 0;
 }
 

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <optional>
+
 #include <string>
 #include <vector>
+#include "render_command.h"
 
 namespace upf::app {
 
@@ -17,6 +19,8 @@ struct RunArgs {
   std::string solver;            // empty: the scene's own solvers
   std::string checkpoint_every;  // empty: checkpoints only on Ctrl-C
   std::string resume;            // a run directory to continue; then scene is empty
+  bool render = false;           // pictures of every frame once the run is done
+  RenderArgs render_args;        // their look (the run directory is filled in)
 };
 
 struct CompareArgs {

@@ -1,7 +1,9 @@
 // upf: the command-line program. Thin: it parses arguments and calls the framework.
 //   upf run SCENE [--out DIR] [--threads N] [--end T] [--quiet] [--solver NAME]
 //           [--checkpoint-every 5m|0.5sim]
+//           [--render [--color-by F] [--size WxH] ...]
 //   upf run --resume DIR [--threads N] [--end T]
+//   upf render RUN_DIR [--color-by F] [--size WxH] [--frames A:B] [--out DIR] [--no-video]
 //   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
 //   upf validate SCENE...
 //   upf info
@@ -13,6 +15,7 @@
 
 #include "commands.h"
 #include "framework/core/errors.h"
+#include "render_command.h"
 
 namespace {
 // The options `run` and `compare` share, with the same meaning.
@@ -55,6 +58,21 @@ int main(int argc, char** argv) {
       ->excludes(out_option)
       ->excludes(solver_option)
       ->excludes(every_option);
+  run->add_flag("--render", run_args.render,
+                "draw a PNG of every frame (and an MP4 with ffmpeg) into OUT/render when done");
+  add_render_options(*run, run_args.render_args);
+
+  upf::app::RenderArgs render_args;
+  auto* render = app.add_subcommand(
+      "render", "draw a run's saved frames: one PNG per frame, and an MP4 with ffmpeg");
+  render->add_option("run_dir", render_args.run_dir, "the run's output directory")->required();
+  render->add_option("--out,-o", render_args.out_dir, "picture directory (default RUN_DIR/render)");
+  render->add_option("--frames", render_args.frames,
+                     "frame N, or frames A:B (either may be empty)");
+  render->add_option("--threads,-j", render_args.threads, "CPU threads (default: all)")
+      ->check(CLI::Range(1, 1024));
+  render->add_flag("--quiet,-q", render_args.quiet, "no progress output");
+  add_render_options(*render, render_args);
 
   upf::app::CompareArgs compare_args;
   auto* compare = app.add_subcommand(
@@ -96,6 +114,7 @@ int main(int argc, char** argv) {
       compare_args.solvers_given = solvers->count() > 0;
       return upf::app::compare_command(compare_args);
     }
+    if (*render) return upf::app::render_command(render_args);
     if (*validate) return upf::app::validate_command(validate_files);
     if (*info) return upf::app::info_command();
   } catch (const upf::InputError& e) {

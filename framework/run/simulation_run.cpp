@@ -11,6 +11,10 @@
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
 #include "framework/output/atomic_file.h"
+#include "framework/output/liquid_surface.h"
+#include "framework/output/mesh_ply_obj_writer.h"
+#include "framework/output/mesh_vtp_writer.h"
+#include "framework/output/ply_points_writer.h"
 #include "framework/output/pvd_series.h"
 #include "framework/output/vtp_writer.h"
 #include "framework/run/metrics_log.h"
@@ -61,9 +65,12 @@ class FrameWriter {
       : out_dir_(out_dir),
         fields_(std::move(fields)),
         enabled_(enabled && scene.output.vtp),
+        ply_(enabled && scene.output.ply),
+        surface_(enabled && scene.output.surface),
+        spacing_(scene.world.spacing),
         series_(out_dir / "particles.pvd"),
         world_(world) {
-    if (enabled_) ensure_directory(out_dir / "frames");
+    if (enabled_ || ply_ || surface_) ensure_directory(out_dir / "frames");
     for (auto& b : world_.body_systems()) b->open_outputs(out_dir, enabled_);
   }
 
@@ -76,9 +83,15 @@ class FrameWriter {
       write_vtp(out_dir_ / name, particles, fields_);
       files.push_back(name);
     }
+    if (ply_) {  // for Blender and MeshLab; ParaView has the .vtp, so not in the .pvd
+      char name[64];
+      std::snprintf(name, sizeof name, "frames/frame_%05d.ply", frames_);
+      write_ply_points(out_dir_ / name, particles, fields_);
+    }
     for (auto& b : world_.body_systems())
       for (auto& f : b->write_frame(out_dir_, frames_, time)) files.push_back(std::move(f));
-    if (enabled_) series_.add(time, files);
+    if (surface_) files.push_back(write_surface(particles));  // the last part at every step
+    if (enabled_ || surface_) series_.add(time, files);
     ++frames_;
   }
   int frames() const { return frames_; }
@@ -92,9 +105,26 @@ class FrameWriter {
   }
 
  private:
+  // The liquid's surface (output/liquid_surface.h) as frames/surface_NNNNN.ply for renderers and
+  // .vtp for ParaView; returns the .vtp's name for the .pvd.
+  std::string write_surface(const Particles& particles) const {
+    LiquidSurfaceOptions options;
+    options.threads = world_.executor().threads();
+    const MeshPiece mesh = liquid_surface_mesh(particles, spacing_, options);
+    char name[64];
+    std::snprintf(name, sizeof name, "frames/surface_%05d.ply", frames_);
+    write_mesh_ply(out_dir_ / name, mesh);
+    std::snprintf(name, sizeof name, "frames/surface_%05d.vtp", frames_);
+    write_mesh_vtp(out_dir_ / name, {mesh}, {});
+    return name;
+  }
+
   std::filesystem::path out_dir_;
   std::vector<std::string> fields_;
-  bool enabled_;
+  bool enabled_;  // .vtp frames and the .pvd
+  bool ply_;      // .ply point clouds
+  bool surface_;  // liquid surface meshes: .ply, and .vtp in the .pvd
+  double spacing_;
   PvdSeries series_;
   World& world_;
   int frames_ = 0;
@@ -213,6 +243,9 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   const Particles& particles = world->particles();
   // Before anything is written: a misspelt field stops the run with nothing but the directory.
   std::vector<std::string> fields = check_output_fields(scene, particles);
+  if (!options.resume && !options.scene_text.empty())
+    write_file_atomically(options.out_dir / "scene.json",
+                          [&](std::ostream& out) { out << options.scene_text; });
   const double end = options.end_time.value_or(scene.world.time.end);
   const Real spacing = scene.world.spacing;
 

@@ -42,6 +42,9 @@ struct RunOptions {
   // Kept at the head of every checkpoint for the caller: the command line stores the scene and
   // its options there, so `upf run --resume DIR` needs nothing else (read_checkpoint_header).
   std::string checkpoint_header;
+  // The scene file's text: kept as out_dir/scene.json once the run's checks have passed (not on
+  // resume), so tools such as `upf render` know the scene a run directory came from.
+  std::string scene_text;
   // Continue the run whose checkpoint is in out_dir, with the scene it was made from.
   bool resume = false;
   // Polled after every step: true ends the run after a checkpoint (status "interrupted").

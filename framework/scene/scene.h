@@ -52,7 +52,13 @@ struct OutputDesc {
   // Exported fields to write in each frame, checked against the fields the solvers create when
   // the run starts (the reader checks the syntax only). Absent: every exported field, by name.
   std::optional<std::vector<std::string>> fields;
+  // Frame formats ("formats"): VTK .vtp frames listed in particles.pvd, and PLY point clouds
+  // (frames/frame_NNNNN.ply, not in the .pvd) for Blender and MeshLab.
   bool vtp = true;
+  bool ply = false;
+  // "surface": a triangle mesh of the liquid's surface per frame (frames/surface_NNNNN.ply, and
+  // frames/surface_NNNNN.vtp as a further part of each time step in particles.pvd).
+  bool surface = false;
 };
 
 struct SceneDescription {

@@ -3,6 +3,7 @@
 #include <unistd.h>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "framework/scene/json_input.h"
 
@@ -12,9 +13,12 @@ namespace {
 
 using nlohmann::json;
 
+// "render" belongs to the pictures (render/): a program that registers its section checks it,
+// others (tests, embedders) accept it unread, so one scene file serves them all.
 const std::vector<std::string> kTopKeys = {
-    "name",         "description", "gravity", "particle_spacing", "materials", "containers",
-    "fluid_blocks", "time",        "output",  "probes",           "stability", "neighbours"};
+    "name",       "description",  "gravity", "particle_spacing", "materials",
+    "containers", "fluid_blocks", "time",    "output",           "probes",
+    "stability",  "neighbours",   "render"};
 const std::vector<std::string> kAxisNames = {"x", "y", "z"};
 
 std::optional<int> read_axis(JsonInput& in, const json& object, const std::string& path,
@@ -344,13 +348,27 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
       if (!f->is_array()) {
         in.problem("/output/formats", "expected an array of format names");
       } else {
+        // Each format name and the flag it sets; an unknown name gets them all listed.
+        const std::pair<const char*, bool OutputDesc::*> known[] = {
+            {"vtp", &OutputDesc::vtp},
+            {"ply", &OutputDesc::ply},
+            {"surface", &OutputDesc::surface},
+        };
+        std::string known_list;
+        for (const auto& [format, flag] : known)
+          known_list += (known_list.empty() ? "\"" : ", \"") + std::string(format) + "\"";
         for (std::size_t i = 0; i < f->size(); ++i) {
           const json& name = (*f)[i];
-          if (name.is_string() && name.get<std::string>() == "vtp") {
-            scene.output.vtp = true;
-          } else {
+          bool found = false;
+          for (const auto& [format, flag] : known) {
+            if (name.is_string() && name.get<std::string>() == format) {
+              scene.output.*flag = true;
+              found = true;
+            }
+          }
+          if (!found) {
             in.problem(JsonInput::child("/output/formats", i),
-                       "unknown format " + name.dump() + " (known: \"vtp\")");
+                       "unknown format " + name.dump() + " (known: " + known_list + ")");
           }
         }
       }

@@ -1,0 +1,102 @@
+#include "render_command.h"
+
+#include <cstdio>
+
+#include "framework/core/errors.h"
+#include "render/render_run.h"
+
+namespace upf::app {
+
+namespace {
+
+int parse_whole(const std::string& text, const std::string& option) {
+  std::size_t used = 0;
+  int v = -1;
+  try {
+    v = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || v < 0)
+    throw InputError(option, "\"" + text + "\" is not a whole number >= 0");
+  return v;
+}
+
+render::RenderOverrides overrides_of(const RenderArgs& args) {
+  render::RenderOverrides o;
+  if (!args.size.empty()) {
+    const auto x = args.size.find('x');
+    const int w = x == std::string::npos ? -1 : parse_whole(args.size.substr(0, x), "--size");
+    const int h = x == std::string::npos ? -1 : parse_whole(args.size.substr(x + 1), "--size");
+    if (w < 16 || h < 16 || w > 8192 || h > 8192)
+      throw InputError(
+          "--size",
+          "\"" + args.size + "\": expected WIDTHxHEIGHT, each 16 to 8192 pixels (1280x720)");
+    o.width = w;
+    o.height = h;
+  }
+  if (args.samples) o.samples_per_axis = *args.samples;
+  if (!args.color_by.empty()) o.color_by = args.color_by;
+  if (!args.range.empty()) {
+    if (args.range.size() != 2 || !(args.range[0] < args.range[1]))
+      throw InputError("--range", "expected LOW,HIGH with LOW < HIGH");
+    o.range = std::array<double, 2>{args.range[0], args.range[1]};
+  }
+  if (args.walls == "glass") o.walls = render::WallStyle::Glass;
+  if (args.walls == "solid") o.walls = render::WallStyle::Solid;
+  if (args.walls == "hidden") o.walls = render::WallStyle::Hidden;
+  return o;
+}
+
+}  // namespace
+
+void add_render_options(CLI::App& command, RenderArgs& args) {
+  command.add_option("--color-by", args.color_by,
+                     "type, material, speed or a field of the frames (density, pressure, ...)");
+  command.add_option("--size", args.size, "picture size WIDTHxHEIGHT (default 1280x720)");
+  command.add_option("--samples", args.samples, "rays per pixel along each axis (default 2)")
+      ->check(CLI::Range(1, 8));
+  command.add_option("--range", args.range, "colour range LOW,HIGH (default: 1st-99th percentile)")
+      ->delimiter(',');
+  command.add_option("--walls", args.walls, "near walls: glass (default), solid or hidden")
+      ->check(CLI::IsMember({"glass", "solid", "hidden"}));
+  command.add_flag("--no-video", args.no_video, "pictures only, no MP4");
+}
+
+int render_command(const RenderArgs& args) {
+  render::RenderRequest request;
+  request.run_dir = args.run_dir;
+  request.out_dir = args.out_dir;
+  request.overrides = overrides_of(args);
+  request.video = !args.no_video;
+  request.threads = args.threads;
+  if (!args.frames.empty()) {
+    const auto colon = args.frames.find(':');
+    if (colon == std::string::npos) {
+      request.first_frame = request.last_frame = parse_whole(args.frames, "--frames");
+    } else {
+      const std::string a = args.frames.substr(0, colon), b = args.frames.substr(colon + 1);
+      request.first_frame = a.empty() ? 0 : parse_whole(a, "--frames");
+      request.last_frame = b.empty() ? -1 : parse_whole(b, "--frames");
+    }
+  }
+  if (!args.quiet)
+    request.on_frame = [](int done, int total) {
+      std::fprintf(stderr, "\rrendering frame %d/%d", done, total);
+      if (done == total) std::fprintf(stderr, "\n");
+    };
+  const render::RenderOutcome out = render::render_run(request);
+  const std::string dir =
+      out.pictures.empty() ? std::string() : out.pictures.front().parent_path().string();
+  std::printf("pictures: %zu in %s (%.1f s, coloured by %s", out.pictures.size(), dir.c_str(),
+              out.seconds, out.color_by.c_str());
+  if (out.range) std::printf(" from %.4g to %.4g", (*out.range)[0], (*out.range)[1]);
+  std::printf(")\n");
+  if (out.video)
+    std::printf("video: %s\n", out.video->string().c_str());
+  else
+    std::printf("video: none (%s)\n", out.video_note.c_str());
+  return 0;
+}
+
+}  // namespace upf::app

@@ -1,0 +1,159 @@
+#include "render/frame_picture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "render/ray_tracer.h"
+
+namespace upf::render {
+
+namespace {
+
+ParticleType type_of(const PolyData& p, std::size_t i) {
+  const VtpArray* type = p.point_array("type");
+  const double t = type ? type->values[i] : 0;
+  return t >= 0 && t < kParticleTypeCount ? ParticleType(int(t)) : ParticleType::Liquid;
+}
+
+// Frozen particles within a few spacings of a face of the walls' bounding box, on the side the
+// camera looks from: the tank's near walls. Drawn as glass so they do not hide the inside.
+class NearWalls {
+ public:
+  NearWalls(const PolyData& p, const Eigen::Vector3f& eye, float thickness) : eye_(eye) {
+    lo_ = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+    hi_ = -lo_;
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      if (type_of(p, i) != ParticleType::Frozen) continue;
+      lo_ = lo_.cwiseMin(p.points[i]);
+      hi_ = hi_.cwiseMax(p.points[i]);
+    }
+    thickness_ = thickness;
+  }
+  bool contains(const Eigen::Vector3f& x) const {
+    for (int a = 0; a < 3; ++a) {
+      if (eye_[a] < lo_[a] && x[a] < lo_[a] + thickness_) return true;
+      if (eye_[a] > hi_[a] && x[a] > hi_[a] - thickness_) return true;
+    }
+    return false;
+  }
+
+ private:
+  Eigen::Vector3f eye_, lo_, hi_;
+  float thickness_ = 0;
+};
+
+std::string format_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+// The unit of the fields every fluid solver writes; others are shown by name alone.
+std::string field_label(const std::string& field) {
+  if (field == "speed" || field == "velocity") return field + " (m/s)";
+  if (field == "density") return "density (kg/m3)";
+  if (field == "pressure") return "pressure (Pa)";
+  return field;
+}
+
+void draw_colour_bar(Image& image, const ColourScale& scale, int font) {
+  const int bar_w = std::max(8, image.width() / 60);
+  const int bar_h = image.height() / 2;
+  const int x0 = image.width() - bar_w - 12 * font - Image::text_width("-0.000e+00", font);
+  const int y0 = (image.height() - bar_h) / 2;
+  const Colour ink(0.1f, 0.1f, 0.12f);
+  image.fill_rect(x0 - 1, y0 - 1, x0 + bar_w + 1, y0 + bar_h + 1, ink);
+  for (int y = 0; y < bar_h; ++y)
+    image.fill_rect(x0, y0 + y, x0 + bar_w, y0 + y + 1, viridis(1.0 - (y + 0.5) / bar_h));
+  for (int k = 0; k <= 4; ++k) {
+    const double s = k / 4.0;
+    const int y = y0 + int(std::lround((1 - s) * (bar_h - 1)));
+    image.fill_rect(x0 + bar_w, y, x0 + bar_w + 3 * font, y + std::max(1, font / 2), ink);
+    image.draw_text(x0 + bar_w + 4 * font, y - Image::text_height(font) / 2,
+                    format_number(scale.low + s * (scale.high - scale.low)), ink, font);
+  }
+  const std::string label = field_label(scale.field);
+  image.draw_text(std::min(x0 - Image::text_width(label, font) / 2 + bar_w / 2,
+                           image.width() - Image::text_width(label, font) - 2 * font),
+                  y0 - 4 * font - Image::text_height(font), label, ink, font);
+}
+
+}  // namespace
+
+bool frame_has_field(const PolyData& particles, const std::string& field) {
+  if (field == "speed") return particles.point_array("velocity") != nullptr;
+  return particles.point_array(field) != nullptr;
+}
+
+std::optional<double> field_value(const PolyData& particles, const std::string& field,
+                                  std::size_t i) {
+  const VtpArray* a = particles.point_array(field == "speed" ? "velocity" : field);
+  if (!a || i >= a->tuples()) return std::nullopt;
+  return a->magnitude(i);
+}
+
+Image draw_frame(const FrameData& frame, const PictureContext& context) {
+  const RenderSettings& settings = context.settings;
+  const PolyData& p = frame.particles;
+  RenderScene scene;
+  const float radius = float(0.5 * context.particle_spacing);
+  scene.opaque.radius = scene.glass.radius = radius;
+  const NearWalls near_walls(p, context.camera.position.cast<float>(),
+                             float(3.0 * context.particle_spacing));
+  bool have_body_meshes = false;
+  for (const PolyData& m : frame.meshes) have_body_meshes |= m.cell_array("body") != nullptr;
+  const VtpArray* material = p.point_array("material");
+
+  for (std::size_t i = 0; i < p.points.size(); ++i) {
+    const ParticleType type = type_of(p, i);
+    Colour c = type_colour(type);
+    if (type == ParticleType::Frozen) {
+      if (settings.walls == WallStyle::Hidden) continue;
+      if (settings.walls == WallStyle::Glass && near_walls.contains(p.points[i])) {
+        scene.glass.centres.push_back(p.points[i]);
+        scene.glass.colours.push_back(c);
+        continue;
+      }
+    } else if (type == ParticleType::Rigid && have_body_meshes) {
+      continue;  // the body's mesh stands for its boundary particles
+    } else if (context.scale) {
+      const double v = field_value(p, context.scale->field, i).value_or(std::nan(""));
+      const double span = context.scale->high - context.scale->low;
+      c = viridis(span > 0 ? (v - context.scale->low) / span : 0.5);
+    } else if (settings.color_by == "material" && material) {
+      c = material_colour(std::uint32_t(material->values[i]));
+    }
+    scene.opaque.centres.push_back(p.points[i]);
+    scene.opaque.colours.push_back(c);
+  }
+  for (const PolyData& m : frame.meshes) {
+    const std::uint32_t base = std::uint32_t(scene.meshes.vertices.size());
+    scene.meshes.vertices.insert(scene.meshes.vertices.end(), m.points.begin(), m.points.end());
+    const bool body = m.cell_array("body") != nullptr;
+    for (const auto& t : m.triangles) {
+      scene.meshes.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+      scene.meshes.colours.push_back(
+          type_colour(body ? ParticleType::Rigid : ParticleType::Liquid));
+    }
+  }
+
+  TraceSettings trace;
+  trace.width = settings.width;
+  trace.height = settings.height;
+  trace.samples_per_axis = settings.samples_per_axis;
+  trace.threads = context.threads;
+  Image image = ray_trace(scene, context.camera, trace);
+
+  const int font = std::max(1, settings.height / 300);
+  const Colour ink(0.1f, 0.1f, 0.12f);
+  char time_text[64];
+  std::snprintf(time_text, sizeof time_text, "t = %.3f s", frame.time);
+  image.draw_text(4 * font, 4 * font, context.title, ink, font);
+  image.draw_text(4 * font, 6 * font + Image::text_height(font), time_text, ink, font);
+  if (context.scale) draw_colour_bar(image, *context.scale, font);
+  return image;
+}
+
+}  // namespace upf::render

@@ -1,0 +1,45 @@
+// One picture of one frame: the particles as spheres (liquid, grains, and the walls, the near
+// ones as glass), the bodies' meshes, and the overlays (title, time, colour bar).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/image.h"
+#include "render/render_settings.h"
+#include "render/vtp_reader.h"
+
+namespace upf::render {
+
+// What a frame holds once read: the particles, and the meshes of its other parts (bodies).
+struct FrameData {
+  double time = 0;
+  PolyData particles;
+  std::vector<PolyData> meshes;
+};
+
+// The field values a picture colours by, mapped onto [low, high].
+struct ColourScale {
+  std::string field;
+  double low = 0, high = 1;
+};
+
+struct PictureContext {
+  RenderSettings settings;
+  Camera camera;
+  std::optional<ColourScale> scale;  // absent: colour by type or material
+  double particle_spacing = 0.02;    // spheres are drawn with half of it as radius
+  std::string title;                 // e.g. the scene's name
+  int threads = 0;
+};
+
+// The values shown for `field` on particle `i` (speed: |velocity|); nullopt when the frame has
+// no such field. Throws nothing.
+std::optional<double> field_value(const PolyData& particles, const std::string& field,
+                                  std::size_t i);
+bool frame_has_field(const PolyData& particles, const std::string& field);
+
+Image draw_frame(const FrameData& frame, const PictureContext& context);
+
+}  // namespace upf::render

@@ -1,0 +1,232 @@
+#include "render/render_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "framework/core/child_process.h"
+#include "framework/core/errors.h"
+#include "framework/output/atomic_file.h"
+#include "framework/scene/json_input.h"
+#include "render/frame_picture.h"
+#include "render/run_frames.h"
+
+namespace upf::render {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// What the pictures need from the run's copy of its scene file.
+struct SceneFacts {
+  std::string name;
+  std::optional<double> spacing;
+  Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+  std::optional<double> fps;
+  RenderSettings settings;
+};
+
+SceneFacts read_scene_facts(const fs::path& run_dir) {
+  SceneFacts facts;
+  facts.name = fs::absolute(run_dir).lexically_normal().filename().string();
+  if (facts.name.empty()) facts.name = fs::absolute(run_dir).parent_path().filename().string();
+  const fs::path file = run_dir / "scene.json";
+  std::ifstream in(file);
+  if (!in) return facts;  // an older run: defaults
+  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) throw InputError(file.string(), "not a JSON object");
+  if (auto n = doc.find("name"); n != doc.end() && n->is_string()) facts.name = *n;
+  if (auto s = doc.find("particle_spacing"); s != doc.end() && s->is_number() && *s > 0)
+    facts.spacing = s->get<double>();
+  if (auto g = doc.find("gravity"); g != doc.end() && g->is_array() && g->size() == 3) {
+    Eigen::Vector3d v;
+    for (int a = 0; a < 3; ++a)
+      v[a] = (*g)[std::size_t(a)].is_number() ? double((*g)[std::size_t(a)]) : 0;
+    if (v.norm() > 0) facts.up = -v.normalized();
+  }
+  if (auto o = doc.find("output"); o != doc.end() && o->is_object())
+    if (auto f = o->find("fps"); f != o->end() && f->is_number() && *f > 0)
+      facts.fps = f->get<double>();
+  if (auto r = doc.find("render"); r != doc.end()) {
+    std::vector<InputProblem> problems;
+    JsonInput input(problems);
+    read_render_settings(*r, "/render", input, facts.settings);
+    if (!problems.empty()) {
+      for (auto& p : problems) p.where = file.string() + ":" + p.where;
+      throw InputError(std::move(problems));
+    }
+  }
+  return facts;
+}
+
+// The particle spacing of a run without scene.json (older runs): the median distance from a
+// sample of particles to their nearest neighbours, which on a lattice is the spacing.
+double estimate_spacing(const PolyData& p) {
+  std::vector<double> nearest;
+  const std::size_t step = std::max<std::size_t>(1, p.points.size() / 200);
+  for (std::size_t i = 0; i < p.points.size(); i += step) {
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t j = 0; j < p.points.size(); ++j) {
+      const double d = double((p.points[i] - p.points[j]).norm());
+      if (j != i && d > 0) best = std::min(best, d);
+    }
+    if (best < std::numeric_limits<double>::max()) nearest.push_back(best);
+  }
+  if (nearest.empty()) return 0.02;
+  std::nth_element(nearest.begin(), nearest.begin() + std::ptrdiff_t(nearest.size() / 2),
+                   nearest.end());
+  return nearest[nearest.size() / 2];
+}
+
+FrameData read_frame(const RunFrame& f) {
+  FrameData data;
+  data.time = f.time;
+  data.particles = read_vtp(f.parts.front());
+  for (std::size_t k = 1; k < f.parts.size(); ++k) data.meshes.push_back(read_vtp(f.parts[k]));
+  return data;
+}
+
+// The 1st and 99th percentiles of the field over the moving particles of every frame.
+std::array<double, 2> auto_range(const std::vector<RunFrame>& frames, const std::string& field) {
+  double low = std::numeric_limits<double>::max(), high = -low;
+  for (const RunFrame& f : frames) {
+    const PolyData p = read_vtp(f.parts.front());
+    const VtpArray* type = p.point_array("type");
+    std::vector<double> v;
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      const int t = type ? int(type->values[i]) : 0;
+      if (t == int(ParticleType::Frozen) || t == int(ParticleType::Rigid)) continue;
+      if (auto x = field_value(p, field, i); x && std::isfinite(*x)) v.push_back(*x);
+    }
+    if (v.empty()) continue;
+    std::sort(v.begin(), v.end());
+    low = std::min(low, v[std::size_t(0.01 * double(v.size() - 1))]);
+    high = std::max(high, v[std::size_t(0.99 * double(v.size() - 1))]);
+  }
+  if (low > high) return {0, 1};
+  if (high - low < 1e-12 * std::max(1.0, std::abs(high))) return {low - 0.5, high + 0.5};
+  return {low, high};
+}
+
+bool on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::stringstream dirs(path);
+  std::string dir;
+  while (std::getline(dirs, dir, ':'))
+    if (!dir.empty() && ::access((fs::path(dir) / program).c_str(), X_OK) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+RenderOutcome render_run(const RenderRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
+  SceneFacts facts = read_scene_facts(request.run_dir);
+  RenderSettings settings = facts.settings;
+  const RenderOverrides& o = request.overrides;
+  if (o.width) settings.width = *o.width;
+  if (o.height) settings.height = *o.height;
+  if (o.samples_per_axis) settings.samples_per_axis = *o.samples_per_axis;
+  if (o.color_by) settings.color_by = *o.color_by;
+  if (o.range) settings.range = o.range;
+  if (o.walls) settings.walls = *o.walls;
+
+  std::vector<RunFrame> frames = read_run_frames(request.run_dir);
+  const int last = request.last_frame < 0 ? int(frames.size()) - 1
+                                          : std::min(request.last_frame, int(frames.size()) - 1);
+  if (request.first_frame < 0 || request.first_frame > last)
+    throw InputError("--frames", "the run has frames 0 to " + std::to_string(frames.size() - 1));
+  frames = std::vector<RunFrame>(frames.begin() + request.first_frame, frames.begin() + last + 1);
+
+  const FrameData first = read_frame(frames.front());
+  PictureContext context;
+  context.settings = settings;
+  context.title = facts.name;
+  context.threads = request.threads;
+  context.particle_spacing = facts.spacing.value_or(estimate_spacing(first.particles));
+  if (settings.color_by != "type" && settings.color_by != "material") {
+    if (!frame_has_field(first.particles, settings.color_by)) {
+      std::string known = "\"type\", \"material\", \"speed\"";
+      for (const auto& a : first.particles.point_data)
+        if (a.name != "type" && a.name != "material" && a.name != "id")
+          known += ", \"" + a.name + "\"";
+      throw InputError("color_by", "the frames have no field \"" + settings.color_by +
+                                       "\" (known: " + known + ")");
+    }
+    const auto range = settings.range.value_or(auto_range(frames, settings.color_by));
+    context.scale = ColourScale{settings.color_by, range[0], range[1]};
+  }
+  if (settings.camera) {
+    context.camera = *settings.camera;
+  } else {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
+    for (const auto& x : first.particles.points) {
+      lo = lo.cwiseMin(x.cast<double>());
+      hi = hi.cwiseMax(x.cast<double>());
+    }
+    if (first.particles.points.empty()) lo = hi = Eigen::Vector3d::Zero();
+    context.camera = frame_box(lo, hi, facts.up, double(settings.width) / settings.height);
+  }
+
+  const fs::path out_dir = request.out_dir.empty() ? request.run_dir / "render" : request.out_dir;
+  ensure_directory(out_dir);
+  RenderOutcome outcome;
+  outcome.color_by = settings.color_by;
+  if (context.scale) outcome.range = std::array<double, 2>{context.scale->low, context.scale->high};
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const FrameData data = k == 0 ? first : read_frame(frames[k]);
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%05d.png", request.first_frame + int(k));
+    write_png(out_dir / name, draw_frame(data, context));
+    outcome.pictures.push_back(out_dir / name);
+    if (request.on_frame) request.on_frame(int(k) + 1, int(frames.size()));
+  }
+
+  if (!request.video) {
+    outcome.video_note = "not asked for";
+  } else if (frames.size() < 2) {
+    outcome.video_note = "one frame only";
+  } else if (!on_path("ffmpeg")) {
+    outcome.video_note = "ffmpeg is not installed (apt-get install ffmpeg)";
+  } else {
+    double fps = facts.fps.value_or(0);
+    if (fps <= 0) {
+      const double span = frames.back().time - frames.front().time;
+      fps = span > 0 ? double(frames.size() - 1) / span : 30;
+    }
+    const fs::path video = out_dir / (facts.name + ".mp4");
+    const fs::path partial = out_dir / (facts.name + ".mp4.tmp");
+    char rate[32];
+    std::snprintf(rate, sizeof rate, "%.6g", fps);
+    const ChildExit ffmpeg = spawn_and_wait(
+        {"ffmpeg", "-y", "-loglevel", "error", "-framerate", rate, "-start_number",
+         std::to_string(request.first_frame), "-i", (out_dir / "frame_%05d.png").string(),
+         // H.264 wants even sizes and 4:2:0 for players to accept it.
+         "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-f",
+         "mp4", partial.string()},
+        out_dir / "ffmpeg.log");
+    std::error_code ec;
+    if (ffmpeg.started && ffmpeg.code == 0) {
+      fs::rename(partial, video, ec);
+      if (ec) throw OutputError("cannot write '" + video.string() + "': " + ec.message());
+      fs::remove(out_dir / "ffmpeg.log", ec);
+      outcome.video = video;
+    } else {
+      fs::remove(partial, ec);
+      outcome.video_note =
+          ffmpeg.started ? "ffmpeg failed: " + last_line(out_dir / "ffmpeg.log") : ffmpeg.error;
+    }
+  }
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
+}
+
+}  // namespace upf::render

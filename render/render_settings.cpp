@@ -1,0 +1,101 @@
+#include "render/render_settings.h"
+
+#include <memory>
+
+#include "framework/scene/json_input.h"
+#include "framework/scene/scene_section.h"
+#include "framework/solver/registry.h"
+
+namespace upf::render {
+
+namespace {
+
+struct RenderSectionData : SceneSectionData {
+  RenderSettings settings;
+};
+
+}  // namespace
+
+void read_render_settings(const nlohmann::json& node, const std::string& path, JsonInput& input,
+                          RenderSettings& settings) {
+  if (!input.expect_object(node, path)) return;
+  input.check_keys(node, path,
+                   {"camera", "width", "height", "samples", "color_by", "range", "walls"});
+  if (auto it = node.find("camera"); it != node.end()) {
+    const std::string where = JsonInput::child(path, "camera");
+    if (input.expect_object(*it, where)) {
+      input.check_keys(*it, where, {"position", "target", "up", "fov"});
+      Camera c;
+      const auto position = input.vec3(*it, where, "position", true);
+      const auto target = input.vec3(*it, where, "target", true);
+      c.up = input.vec3(*it, where, "up", false).value_or(c.up);
+      c.fov_degrees = input.number(*it, where, "fov", c.fov_degrees, 1, 170, false, "degrees");
+      if (position && target) {
+        c.position = *position;
+        c.target = *target;
+        if ((c.target - c.position).norm() <= 0)
+          input.problem(JsonInput::child(where, "target"),
+                        "the camera looks at its own position: target must differ from position");
+        else if (c.up.norm() <= 0)
+          input.problem(JsonInput::child(where, "up"), "up must not be the zero vector");
+        else
+          settings.camera = c;
+      }
+    }
+  }
+  settings.width =
+      int(input.number(node, path, "width", settings.width, 16, 8192, false, "pixels"));
+  settings.height =
+      int(input.number(node, path, "height", settings.height, 16, 8192, false, "pixels"));
+  settings.samples_per_axis =
+      int(input.number(node, path, "samples", settings.samples_per_axis, 1, 8, false));
+  if (auto c = input.string(node, path, "color_by", false)) {
+    if (c->empty())
+      input.problem(JsonInput::child(path, "color_by"),
+                    "expected \"type\", \"material\", \"speed\" or a field name");
+    else
+      settings.color_by = *c;
+  }
+  if (auto it = node.find("range"); it != node.end()) {
+    const std::string where = JsonInput::child(path, "range");
+    if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
+      input.problem(where, "expected [low, high], two numbers");
+    else if ((*it)[0].get<double>() >= (*it)[1].get<double>())
+      input.problem(where, "low must be below high");
+    else
+      settings.range = std::array<double, 2>{(*it)[0].get<double>(), (*it)[1].get<double>()};
+  }
+  if (auto w = input.string(node, path, "walls", false)) {
+    if (*w == "glass")
+      settings.walls = WallStyle::Glass;
+    else if (*w == "solid")
+      settings.walls = WallStyle::Solid;
+    else if (*w == "hidden")
+      settings.walls = WallStyle::Hidden;
+    else
+      input.problem(JsonInput::child(path, "walls"),
+                    "unknown wall style \"" + *w + "\" (known: \"glass\", \"solid\", \"hidden\")");
+  }
+  // Whole numbers only: the size is a pixel count.
+  for (const char* key : {"width", "height", "samples"}) {
+    if (auto it = node.find(key);
+        it != node.end() && it->is_number() && it->get<double>() != double(it->get<long long>()))
+      input.problem(JsonInput::child(path, key), "expected a whole number");
+  }
+}
+
+void register_render_section(Registry& registry) {
+  SceneSection section;
+  section.key = "render";
+  section.summary = "how `upf render` and `upf run --render` draw the run's pictures";
+  section.read = [](const nlohmann::json& node, const std::string& path, const SceneDescription&,
+                    JsonInput& input) -> std::shared_ptr<const SceneSectionData> {
+    auto data = std::make_shared<RenderSectionData>();
+    read_render_settings(node, path, input, data->settings);
+    return data;
+  };
+  section.build = [](World&, const SceneDescription&, const SceneSectionData&) {};
+  registry.add_scene_section(std::move(section));
+}
+
+}  // namespace upf::render

@@ -1,0 +1,188 @@
+#include "render/vtp_reader.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "framework/core/errors.h"
+#include "render/xml_tags.h"
+
+namespace upf::render {
+
+namespace {
+
+std::size_t type_size(const std::string& type) {
+  if (type == "Float32" || type == "UInt32" || type == "Int32") return 4;
+  if (type == "Float64" || type == "UInt64" || type == "Int64") return 8;
+  if (type == "UInt16" || type == "Int16") return 2;
+  if (type == "UInt8" || type == "Int8") return 1;
+  return 0;
+}
+
+template <class T>
+double load(const char* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return static_cast<double>(v);
+}
+
+double load_value(const std::string& type, const char* p) {
+  if (type == "Float32") return load<float>(p);
+  if (type == "Float64") return load<double>(p);
+  if (type == "UInt8") return load<std::uint8_t>(p);
+  if (type == "Int8") return load<std::int8_t>(p);
+  if (type == "UInt16") return load<std::uint16_t>(p);
+  if (type == "Int16") return load<std::int16_t>(p);
+  if (type == "UInt32") return load<std::uint32_t>(p);
+  if (type == "Int32") return load<std::int32_t>(p);
+  if (type == "UInt64") return load<std::uint64_t>(p);
+  return load<std::int64_t>(p);
+}
+
+std::size_t to_count(const std::optional<std::string>& text, const std::string& what) {
+  if (!text) return 0;
+  try {
+    std::size_t used = 0;
+    const unsigned long long v = std::stoull(*text, &used);
+    if (used != text->size()) throw std::invalid_argument(what);
+    return static_cast<std::size_t>(v);
+  } catch (const std::exception&) {
+    throw std::runtime_error(what + " \"" + *text + "\" is not a whole number");
+  }
+}
+
+PolyData parse(const std::string& bytes) {
+  const std::size_t appended = bytes.find("<AppendedData");
+  if (appended == std::string::npos)
+    throw std::runtime_error("no <AppendedData> block (only raw appended data is supported)");
+  const std::size_t underscore = bytes.find('_', appended);
+  if (underscore == std::string::npos) throw std::runtime_error("the appended data has no '_'");
+  const std::size_t data_start = underscore + 1;
+  const auto tags = read_xml_tags(std::string_view(bytes).substr(0, underscore));
+
+  PolyData out;
+  std::size_t points = 0, polys = 0, pieces = 0;
+  std::string section;
+  std::vector<double> connectivity, offsets;
+  bool have_points = false;
+  for (const XmlTag& tag : tags) {
+    if (tag.name == "VTKFile" && !tag.closing) {
+      if (tag.attribute("type") != "PolyData") throw std::runtime_error("not a PolyData file");
+      if (tag.attribute("byte_order").value_or("LittleEndian") != "LittleEndian")
+        throw std::runtime_error("big-endian data is not supported");
+      if (tag.attribute("header_type").value_or("UInt32") != "UInt64")
+        throw std::runtime_error("only header_type=\"UInt64\" is supported");
+      if (tag.attribute("compressor")) throw std::runtime_error("compressed data is not supported");
+    } else if (tag.name == "Piece" && !tag.closing) {
+      if (++pieces > 1) throw std::runtime_error("more than one <Piece>");
+      points = to_count(tag.attribute("NumberOfPoints"), "NumberOfPoints");
+      polys = to_count(tag.attribute("NumberOfPolys"), "NumberOfPolys");
+    } else if (tag.name == "PointData" || tag.name == "CellData" || tag.name == "Points" ||
+               tag.name == "Verts" || tag.name == "Polys" || tag.name == "Lines" ||
+               tag.name == "Strips") {
+      section = tag.closing || tag.self_closing ? "" : tag.name;
+    } else if (tag.name == "DataArray" && !tag.closing) {
+      const std::string name = tag.attribute("Name").value_or("");
+      const std::string type = tag.attribute("type").value_or("");
+      if (tag.attribute("format") != "appended")
+        throw std::runtime_error("array '" + name + "' is not in the appended block");
+      const std::size_t size = type_size(type);
+      if (size == 0) throw std::runtime_error("array '" + name + "' has unknown type " + type);
+      const std::size_t components =
+          std::max<std::size_t>(1, to_count(tag.attribute("NumberOfComponents"), "components"));
+      const std::size_t offset = to_count(tag.attribute("offset"), "offset");
+      if (data_start + offset + 8 > bytes.size())
+        throw std::runtime_error("array '" + name + "' starts past the end of the file");
+      std::uint64_t length = 0;
+      std::memcpy(&length, bytes.data() + data_start + offset, 8);
+      const std::size_t begin = data_start + offset + 8;
+      if (length > bytes.size() - begin || length % (size * components) != 0)
+        throw std::runtime_error("array '" + name + "' is cut short or of a wrong length");
+      VtpArray array{name, int(components), {}};
+      array.values.resize(length / size);
+      for (std::size_t k = 0; k < array.values.size(); ++k)
+        array.values[k] = load_value(type, bytes.data() + begin + k * size);
+      if (section == "Points") {
+        if (components != 3 || array.tuples() != points)
+          throw std::runtime_error("Points does not hold 3 components per point");
+        out.points.resize(points);
+        for (std::size_t p = 0; p < points; ++p)
+          out.points[p] =
+              Eigen::Vector3d(array.values[3 * p], array.values[3 * p + 1], array.values[3 * p + 2])
+                  .cast<float>();
+        have_points = true;
+      } else if (section == "PointData") {
+        if (array.tuples() != points)
+          throw std::runtime_error("point array '" + name + "' has a wrong length");
+        out.point_data.push_back(std::move(array));
+      } else if (section == "CellData") {
+        out.cell_data.push_back(std::move(array));
+      } else if (section == "Polys" && name == "connectivity") {
+        connectivity = std::move(array.values);
+      } else if (section == "Polys" && name == "offsets") {
+        offsets = std::move(array.values);
+      }
+    }
+  }
+  if (pieces != 1) throw std::runtime_error("no <Piece>");
+  if (!have_points && points > 0) throw std::runtime_error("no <Points> array");
+  if (offsets.size() != polys) throw std::runtime_error("Polys offsets do not match NumberOfPolys");
+  double previous = 0;
+  for (std::size_t c = 0; c < polys; ++c) {
+    if (offsets[c] - previous != 3 || offsets[c] > double(connectivity.size()))
+      throw std::runtime_error("polygon " + std::to_string(c) + " is not a triangle");
+    std::array<std::uint32_t, 3> t{};
+    for (int k = 0; k < 3; ++k) {
+      const double index = connectivity[std::size_t(previous) + std::size_t(k)];
+      if (index < 0 || index >= double(points))
+        throw std::runtime_error("triangle " + std::to_string(c) + " names a missing point");
+      t[std::size_t(k)] = std::uint32_t(index);
+    }
+    out.triangles.push_back(t);
+    previous = offsets[c];
+  }
+  for (const auto& a : out.cell_data)
+    if (a.tuples() != polys)
+      throw std::runtime_error("cell array '" + a.name + "' has a wrong length");
+  return out;
+}
+
+const VtpArray* find(const std::vector<VtpArray>& arrays, std::string_view name) {
+  for (const auto& a : arrays)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+}  // namespace
+
+double VtpArray::magnitude(std::size_t i) const {
+  if (components == 1) return values[i];
+  double s = 0;
+  for (int c = 0; c < components; ++c) {
+    const double v = values[i * std::size_t(components) + std::size_t(c)];
+    s += v * v;
+  }
+  return std::sqrt(s);
+}
+
+const VtpArray* PolyData::point_array(std::string_view name) const {
+  return find(point_data, name);
+}
+const VtpArray* PolyData::cell_array(std::string_view name) const {
+  return find(cell_data, name);
+}
+
+PolyData read_vtp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "cannot open the frame file");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  try {
+    return parse(bytes);
+  } catch (const std::runtime_error& e) {
+    throw InputError(path.string(), std::string("not a frame upf can read: ") + e.what());
+  }
+}
+
+}  // namespace upf::render

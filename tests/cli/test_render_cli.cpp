@@ -1,0 +1,105 @@
+// `upf render` and `upf run --render`: pictures of a small run, checked by decoding them
+// (stb_image): the requested size, not blank (the pixel values vary), one per frame, and an MP4
+// when ffmpeg is installed. Bad requests are exit code 2 naming the culprit.
+#include <stb_image.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "cli_support.h"
+
+namespace upf::cli_test {
+namespace {
+
+struct Picture {
+  int width = 0, height = 0;
+  double luminance_std = 0;  // over every pixel, in 8-bit units
+};
+
+Picture decode(const fs::path& file) {
+  Picture p;
+  int channels = 0;
+  unsigned char* data = stbi_load(file.c_str(), &p.width, &p.height, &channels, 3);
+  if (!data) return p;
+  double sum = 0, sum2 = 0;
+  const std::size_t n = std::size_t(p.width) * std::size_t(p.height);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double y = 0.2126 * data[3 * i] + 0.7152 * data[3 * i + 1] + 0.0722 * data[3 * i + 2];
+    sum += y;
+    sum2 += y * y;
+  }
+  stbi_image_free(data);
+  p.luminance_std =
+      std::sqrt(std::max(0.0, sum2 / double(n) - (sum / double(n)) * (sum / double(n))));
+  return p;
+}
+
+class Render : public Cli {
+ protected:
+  // A 0.05 m dam break for 0.2 s at 10 frames per second: 3 frames.
+  std::string small_run() {
+    auto doc = sample();
+    doc["time"]["end"] = 0.2;
+    doc["output"]["fps"] = 10;
+    return write(doc);
+  }
+};
+
+TEST_F(Render, RunWithRenderDrawsEveryFrameAtTheRequestedSize) {
+  const fs::path out = dir_ / "run";
+  const Result r = run_upf("run " + small_run() + " --out " + out.string() +
+                           " -q -j 2 --render --size 320x180 --color-by speed");
+  ASSERT_EQ(r.code, 0) << r.output;
+  int frames = 0;
+  for (const auto& e : fs::directory_iterator(out / "frames"))
+    frames += e.path().extension() == ".vtp";
+  ASSERT_EQ(frames, 3);
+  for (int k = 0; k < frames; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", k);
+    const Picture p = decode(out / "render" / name);
+    EXPECT_EQ(p.width, 320) << name;
+    EXPECT_EQ(p.height, 180) << name;
+    // A blank or nearly blank picture has a standard deviation near 0; the tank, the water and
+    // the colour bar give tens of grey levels.
+    EXPECT_GT(p.luminance_std, 10.0) << name;
+  }
+  EXPECT_NE(r.output.find("coloured by speed"), std::string::npos) << r.output;
+  if (std::system("command -v ffmpeg >/dev/null 2>&1") == 0) {
+    std::ifstream video(out / "render" / "dam_break.mp4", std::ios::binary);
+    char header[8] = {};
+    video.read(header, 8);
+    EXPECT_EQ(std::string(header + 4, 4), "ftyp") << "not an MP4 file";
+  }
+  // Rendering again with other options replaces the pictures; a frame range draws only those.
+  const Result again = run_upf("render " + out.string() +
+                               " --frames 1:1 --size 200x100 --no-video -q --color-by density");
+  ASSERT_EQ(again.code, 0) << again.output;
+  EXPECT_EQ(decode(out / "render" / "frame_00001.png").width, 200);
+  EXPECT_EQ(decode(out / "render" / "frame_00000.png").width, 320);
+}
+
+TEST_F(Render, BadRequestsAreBadInputNamingTheCulprit) {
+  const fs::path out = dir_ / "run";
+  ASSERT_EQ(run_upf("run " + small_run() + " --out " + out.string() + " -q --end 0.05").code, 0);
+  struct Case {
+    std::string args, needle;
+  };
+  for (const Case& c :
+       std::vector<Case>{{"render " + out.string() + " --color-by vorticity", "vorticity"},
+                         {"render " + out.string() + " --size 10x10", "--size"},
+                         {"render " + out.string() + " --frames 7", "--frames"},
+                         {"render " + (dir_ / "nowhere").string(), "particles.pvd"},
+                         {"render " + out.string() + " --range 2,1", "--range"}}) {
+    const Result r = run_upf(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.needle), std::string::npos) << c.args << "\n" << r.output;
+  }
+  // A bad "render" section is caught before the run, by the scene reader.
+  auto doc = sample();
+  doc["render"] = {{"camera", {{"position", {1, 1, 1}}, {"target", {1, 1, 1}}}}, {"walls", "fog"}};
+  expect_rejected(doc, {"/render/camera/target", "/render/walls", "fog"});
+}
+
+}  // namespace
+}  // namespace upf::cli_test
