@@ -94,6 +94,38 @@ std::optional<double> field_value(const PolyData& particles, const std::string& 
   return a->magnitude(i);
 }
 
+std::vector<std::string> colour_choices(const PolyData& particles) {
+  std::vector<std::string> names{"type", "material", "speed"};
+  for (const auto& a : particles.point_data)
+    if (a.name != "type" && a.name != "material" && a.name != "id" && a.name != "velocity")
+      names.push_back(a.name);
+  return names;
+}
+
+std::optional<std::array<double, 2>> field_percentiles(const PolyData& p,
+                                                       const std::string& field) {
+  std::vector<double> v;
+  for (std::size_t i = 0; i < p.points.size(); ++i) {
+    const ParticleType t = type_of(p, i);
+    if (t == ParticleType::Frozen || t == ParticleType::Rigid) continue;
+    if (auto x = field_value(p, field, i); x && std::isfinite(*x)) v.push_back(*x);
+  }
+  if (v.empty()) return std::nullopt;
+  std::sort(v.begin(), v.end());
+  return std::array<double, 2>{v[std::size_t(0.01 * double(v.size() - 1))],
+                               v[std::size_t(0.99 * double(v.size() - 1))]};
+}
+
+Camera camera_for_particles(const PolyData& particles, const Eigen::Vector3d& up, double aspect) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  for (const auto& x : particles.points) {
+    lo = lo.cwiseMin(x.cast<double>());
+    hi = hi.cwiseMax(x.cast<double>());
+  }
+  if (particles.points.empty()) lo = hi = Eigen::Vector3d::Zero();
+  return frame_box(lo, hi, up, aspect);
+}
+
 Image draw_frame(const FrameData& frame, const PictureContext& context) {
   const RenderSettings& settings = context.settings;
   const PolyData& p = frame.particles;
@@ -146,7 +178,7 @@ Image draw_frame(const FrameData& frame, const PictureContext& context) {
   trace.threads = context.threads;
   Image image = ray_trace(scene, context.camera, trace);
 
-  const int font = std::max(1, settings.height / 300);
+  const int font = std::max(1, int(std::lround(settings.height / 300.0)));
   const Colour ink(0.1f, 0.1f, 0.12f);
   char time_text[64];
   std::snprintf(time_text, sizeof time_text, "t = %.3f s", frame.time);

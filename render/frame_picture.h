@@ -2,6 +2,7 @@
 // ones as glass), the bodies' meshes, and the overlays (title, time, colour bar).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,17 @@ struct PictureContext {
 std::optional<double> field_value(const PolyData& particles, const std::string& field,
                                   std::size_t i);
 bool frame_has_field(const PolyData& particles, const std::string& field);
+
+// The names a picture may be coloured by: type, material, speed, then the frame's fields.
+std::vector<std::string> colour_choices(const PolyData& particles);
+
+// The 1st and 99th percentiles of `field` over the moving (liquid and granular) particles;
+// nullopt when none has a finite value.
+std::optional<std::array<double, 2>> field_percentiles(const PolyData& particles,
+                                                       const std::string& field);
+
+// A camera that shows every particle, with `up` as the picture's vertical (frame_box).
+Camera camera_for_particles(const PolyData& particles, const Eigen::Vector3d& up, double aspect);
 
 Image draw_frame(const FrameData& frame, const PictureContext& context);
 

@@ -17,54 +17,13 @@
 #include "framework/scene/json_input.h"
 #include "render/frame_picture.h"
 #include "render/run_frames.h"
+#include "render/scene_facts.h"
 
 namespace upf::render {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// What the pictures need from the run's copy of its scene file.
-struct SceneFacts {
-  std::string name;
-  std::optional<double> spacing;
-  Eigen::Vector3d up = Eigen::Vector3d::UnitY();
-  std::optional<double> fps;
-  RenderSettings settings;
-};
-
-SceneFacts read_scene_facts(const fs::path& run_dir) {
-  SceneFacts facts;
-  facts.name = fs::absolute(run_dir).lexically_normal().filename().string();
-  if (facts.name.empty()) facts.name = fs::absolute(run_dir).parent_path().filename().string();
-  const fs::path file = run_dir / "scene.json";
-  std::ifstream in(file);
-  if (!in) return facts;  // an older run: defaults
-  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object()) throw InputError(file.string(), "not a JSON object");
-  if (auto n = doc.find("name"); n != doc.end() && n->is_string()) facts.name = *n;
-  if (auto s = doc.find("particle_spacing"); s != doc.end() && s->is_number() && *s > 0)
-    facts.spacing = s->get<double>();
-  if (auto g = doc.find("gravity"); g != doc.end() && g->is_array() && g->size() == 3) {
-    Eigen::Vector3d v;
-    for (int a = 0; a < 3; ++a)
-      v[a] = (*g)[std::size_t(a)].is_number() ? double((*g)[std::size_t(a)]) : 0;
-    if (v.norm() > 0) facts.up = -v.normalized();
-  }
-  if (auto o = doc.find("output"); o != doc.end() && o->is_object())
-    if (auto f = o->find("fps"); f != o->end() && f->is_number() && *f > 0)
-      facts.fps = f->get<double>();
-  if (auto r = doc.find("render"); r != doc.end()) {
-    std::vector<InputProblem> problems;
-    JsonInput input(problems);
-    read_render_settings(*r, "/render", input, facts.settings);
-    if (!problems.empty()) {
-      for (auto& p : problems) p.where = file.string() + ":" + p.where;
-      throw InputError(std::move(problems));
-    }
-  }
-  return facts;
-}
 
 // The particle spacing of a run without scene.json (older runs): the median distance from a
 // sample of particles to their nearest neighbours, which on a lattice is the spacing.
@@ -93,22 +52,15 @@ FrameData read_frame(const RunFrame& f) {
   return data;
 }
 
-// The 1st and 99th percentiles of the field over the moving particles of every frame.
+// The 1st and 99th percentiles of the field over the moving particles, widest over all frames,
+// so every picture of a run shares one scale.
 std::array<double, 2> auto_range(const std::vector<RunFrame>& frames, const std::string& field) {
   double low = std::numeric_limits<double>::max(), high = -low;
   for (const RunFrame& f : frames) {
-    const PolyData p = read_vtp(f.parts.front());
-    const VtpArray* type = p.point_array("type");
-    std::vector<double> v;
-    for (std::size_t i = 0; i < p.points.size(); ++i) {
-      const int t = type ? int(type->values[i]) : 0;
-      if (t == int(ParticleType::Frozen) || t == int(ParticleType::Rigid)) continue;
-      if (auto x = field_value(p, field, i); x && std::isfinite(*x)) v.push_back(*x);
+    if (auto r = field_percentiles(read_vtp(f.parts.front()), field)) {
+      low = std::min(low, (*r)[0]);
+      high = std::max(high, (*r)[1]);
     }
-    if (v.empty()) continue;
-    std::sort(v.begin(), v.end());
-    low = std::min(low, v[std::size_t(0.01 * double(v.size() - 1))]);
-    high = std::max(high, v[std::size_t(0.99 * double(v.size() - 1))]);
   }
   if (low > high) return {0, 1};
   if (high - low < 1e-12 * std::max(1.0, std::abs(high))) return {low - 0.5, high + 0.5};
@@ -129,7 +81,8 @@ bool on_path(const std::string& program) {
 
 RenderOutcome render_run(const RenderRequest& request) {
   const auto start = std::chrono::steady_clock::now();
-  SceneFacts facts = read_scene_facts(request.run_dir);
+  SceneFacts facts =
+      read_scene_facts(request.run_dir / "scene.json", run_directory_name(request.run_dir));
   RenderSettings settings = facts.settings;
   const RenderOverrides& o = request.overrides;
   if (o.width) settings.width = *o.width;
@@ -154,10 +107,9 @@ RenderOutcome render_run(const RenderRequest& request) {
   context.particle_spacing = facts.spacing.value_or(estimate_spacing(first.particles));
   if (settings.color_by != "type" && settings.color_by != "material") {
     if (!frame_has_field(first.particles, settings.color_by)) {
-      std::string known = "\"type\", \"material\", \"speed\"";
-      for (const auto& a : first.particles.point_data)
-        if (a.name != "type" && a.name != "material" && a.name != "id")
-          known += ", \"" + a.name + "\"";
+      std::string known;
+      for (const auto& name : colour_choices(first.particles))
+        known += (known.empty() ? "\"" : ", \"") + name + "\"";
       throw InputError("color_by", "the frames have no field \"" + settings.color_by +
                                        "\" (known: " + known + ")");
     }
@@ -167,13 +119,8 @@ RenderOutcome render_run(const RenderRequest& request) {
   if (settings.camera) {
     context.camera = *settings.camera;
   } else {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
-    for (const auto& x : first.particles.points) {
-      lo = lo.cwiseMin(x.cast<double>());
-      hi = hi.cwiseMax(x.cast<double>());
-    }
-    if (first.particles.points.empty()) lo = hi = Eigen::Vector3d::Zero();
-    context.camera = frame_box(lo, hi, facts.up, double(settings.width) / settings.height);
+    context.camera =
+        camera_for_particles(first.particles, facts.up, double(settings.width) / settings.height);
   }
 
   const fs::path out_dir = request.out_dir.empty() ? request.run_dir / "render" : request.out_dir;

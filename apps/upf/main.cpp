@@ -4,6 +4,8 @@
 //           [--render [--color-by F] [--size WxH] ...]
 //   upf run --resume DIR [--threads N] [--end T]
 //   upf render RUN_DIR [--color-by F] [--size WxH] [--frames A:B] [--out DIR] [--no-video]
+//   upf view SCENE_OR_RUN [--size WxH] [--threads N] [--play]
+//            [--screenshot FILE.png [--exit-after N]]
 //   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
 //   upf validate SCENE...
 //   upf info
@@ -13,9 +15,11 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app_registry.h"
 #include "commands.h"
 #include "framework/core/errors.h"
 #include "render_command.h"
+#include "viewer/viewer.h"
 
 namespace {
 // The options `run` and `compare` share, with the same meaning.
@@ -91,6 +95,21 @@ int main(int argc, char** argv) {
                       "the plotting script (default: $UPF_PLOT_SCRIPT, else "
                       "scripts/plot_compare.py of the source tree)");
 
+  upf::viewer::ViewOptions view_options;
+  auto* view = app.add_subcommand(
+      "view", "an interactive window over a scene (stepped live) or a run's saved frames");
+  view->add_option("input", view_options.input, "a scene file or a run's output directory")
+      ->required();
+  view->add_option("--size", view_options.size, "window size WIDTHxHEIGHT (default 1280x720)");
+  view->add_option("--threads,-j", view_options.threads, "CPU threads (default: all)")
+      ->check(CLI::Range(1, 1024));
+  view->add_option("--screenshot", view_options.screenshot,
+                   "write the window's pixels to this PNG after --exit-after frames, then exit");
+  view->add_option("--exit-after", view_options.exit_after,
+                   "close after drawing N frames (default 3 with --screenshot)")
+      ->check(CLI::Range(1, 1000000));
+  view->add_flag("--play", view_options.play, "start playing");
+
   std::vector<std::string> validate_files;
   auto* validate = app.add_subcommand("validate", "check scene files; list every problem");
   validate->add_option("scenes", validate_files, "scene files")->required();
@@ -115,6 +134,7 @@ int main(int argc, char** argv) {
       return upf::app::compare_command(compare_args);
     }
     if (*render) return upf::app::render_command(render_args);
+    if (*view) return upf::viewer::run_viewer(view_options, upf::app::make_app_registry());
     if (*validate) return upf::app::validate_command(validate_files);
     if (*info) return upf::app::info_command();
   } catch (const upf::InputError& e) {

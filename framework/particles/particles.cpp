@@ -13,6 +13,7 @@ template <class T>
 void apply_order(std::vector<T>& values, const std::vector<std::uint32_t>& order,
                  std::vector<std::uint8_t>& scratch) {
   const std::size_t bytes = values.size() * sizeof(T);
+  if (bytes == 0) return;  // an empty world: memcpy must not see the null data() of empty vectors
   if (scratch.size() < bytes) scratch.resize(bytes);
   std::memcpy(scratch.data(), values.data(), bytes);
   const T* old_values = reinterpret_cast<const T*>(scratch.data());

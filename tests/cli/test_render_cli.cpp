@@ -1,38 +1,14 @@
 // `upf render` and `upf run --render`: pictures of a small run, checked by decoding them
 // (stb_image): the requested size, not blank (the pixel values vary), one per frame, and an MP4
 // when ffmpeg is installed. Bad requests are exit code 2 naming the culprit.
-#include <stb_image.h>
-
 #include <cmath>
 #include <fstream>
 
 #include "cli_support.h"
+#include "picture_check.h"
 
 namespace upf::cli_test {
 namespace {
-
-struct Picture {
-  int width = 0, height = 0;
-  double luminance_std = 0;  // over every pixel, in 8-bit units
-};
-
-Picture decode(const fs::path& file) {
-  Picture p;
-  int channels = 0;
-  unsigned char* data = stbi_load(file.c_str(), &p.width, &p.height, &channels, 3);
-  if (!data) return p;
-  double sum = 0, sum2 = 0;
-  const std::size_t n = std::size_t(p.width) * std::size_t(p.height);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double y = 0.2126 * data[3 * i] + 0.7152 * data[3 * i + 1] + 0.0722 * data[3 * i + 2];
-    sum += y;
-    sum2 += y * y;
-  }
-  stbi_image_free(data);
-  p.luminance_std =
-      std::sqrt(std::max(0.0, sum2 / double(n) - (sum / double(n)) * (sum / double(n))));
-  return p;
-}
 
 class Render : public Cli {
  protected:
@@ -57,7 +33,7 @@ TEST_F(Render, RunWithRenderDrawsEveryFrameAtTheRequestedSize) {
   for (int k = 0; k < frames; ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05d.png", k);
-    const Picture p = decode(out / "render" / name);
+    const Picture p = decode_picture(out / "render" / name);
     EXPECT_EQ(p.width, 320) << name;
     EXPECT_EQ(p.height, 180) << name;
     // A blank or nearly blank picture has a standard deviation near 0; the tank, the water and
@@ -75,8 +51,8 @@ TEST_F(Render, RunWithRenderDrawsEveryFrameAtTheRequestedSize) {
   const Result again = run_upf("render " + out.string() +
                                " --frames 1:1 --size 200x100 --no-video -q --color-by density");
   ASSERT_EQ(again.code, 0) << again.output;
-  EXPECT_EQ(decode(out / "render" / "frame_00001.png").width, 200);
-  EXPECT_EQ(decode(out / "render" / "frame_00000.png").width, 320);
+  EXPECT_EQ(decode_picture(out / "render" / "frame_00001.png").width, 200);
+  EXPECT_EQ(decode_picture(out / "render" / "frame_00000.png").width, 320);
 }
 
 TEST_F(Render, BadRequestsAreBadInputNamingTheCulprit) {
