@@ -15,6 +15,7 @@
 #include "framework/compare/comparison.h"
 #include "framework/compare/report_table.h"
 #include "framework/core/errors.h"
+#include "framework/output/liquid_surface.h"
 #include "framework/run/simulation_run.h"
 #include "framework/scene/scene_reader.h"
 #include "framework/scene/solver_override.h"
@@ -79,6 +80,7 @@ int run_command(const RunArgs& args) {
     options.checkpoint = parse_checkpoint_every(run.checkpoint_every);
   options.checkpoint_header = to_header(run);
   options.scene_text = run.scene_text;
+  options.surface_mesher = run_surface_mesher;
   options.resume = !args.resume.empty();
   InterruptSignal interrupt;
   options.stop_requested = [&] { return interrupt.requested(); };
@@ -135,6 +137,7 @@ int compare_command(const CompareArgs& args) {
 
   CompareOptions options;
   options.out_dir = args.out_dir;
+  options.surface_mesher = run_surface_mesher;
   options.threads = args.threads;
   options.end_time = args.end_time;
   options.write_frames = !args.no_frames;

@@ -32,6 +32,7 @@ Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry
     RunOptions run;
     run.out_dir = options.out_dir / plan[i].solver;
     run.threads = options.threads;
+    run.surface_mesher = options.surface_mesher;
     run.end_time = options.end_time;
     run.write_frames = options.write_frames;
     run.on_progress = options.on_progress;

@@ -41,7 +41,8 @@ struct Comparison {
 
 struct CompareOptions {
   std::filesystem::path out_dir = "out/compare";
-  int threads = 0;  // the same for every run; 0: OpenMP's default
+  SurfaceMesher surface_mesher;  // for scenes with the "surface" format (see RunOptions)
+  int threads = 0;               // the same for every run; 0: OpenMP's default
   std::optional<double> end_time;
   bool write_frames = true;
   std::function<void(const SolverRunPlan&, std::size_t index, std::size_t count)> on_run_start;

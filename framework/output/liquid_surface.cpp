@@ -166,4 +166,10 @@ MeshPiece liquid_surface_mesh(const Particles& particles, double h,
   return liquid_surface_mesh(liquid, h, options);
 }
 
+MeshPiece run_surface_mesher(const Particles& particles, double h, int threads) {
+  LiquidSurfaceOptions options;
+  options.threads = threads;
+  return liquid_surface_mesh(particles, h, options);
+}
+
 }  // namespace upf

@@ -59,4 +59,8 @@ MeshPiece liquid_surface_mesh(const std::vector<Eigen::Vector3d>& positions, dou
 MeshPiece liquid_surface_mesh(const Particles& particles, double h,
                               const LiquidSurfaceOptions& options = {});
 
+// The mesher runs use for the "surface" format (RunOptions::surface_mesher), with the default
+// options and the run's thread count.
+MeshPiece run_surface_mesher(const Particles& particles, double h, int threads);
+
 }  // namespace upf

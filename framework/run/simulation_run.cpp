@@ -11,7 +11,6 @@
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
 #include "framework/output/atomic_file.h"
-#include "framework/output/liquid_surface.h"
 #include "framework/output/mesh_ply_obj_writer.h"
 #include "framework/output/mesh_vtp_writer.h"
 #include "framework/output/ply_points_writer.h"
@@ -61,7 +60,8 @@ std::vector<std::string> check_output_fields(const SceneDescription& scene,
 class FrameWriter {
  public:
   FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
-              std::vector<std::string> fields, bool enabled, World& world)
+              std::vector<std::string> fields, bool enabled, World& world,
+              SurfaceMesher surface_mesher)
       : out_dir_(out_dir),
         fields_(std::move(fields)),
         enabled_(enabled && scene.output.vtp),
@@ -69,7 +69,12 @@ class FrameWriter {
         surface_(enabled && scene.output.surface),
         spacing_(scene.world.spacing),
         series_(out_dir / "particles.pvd"),
-        world_(world) {
+        world_(world),
+        surface_mesher_(std::move(surface_mesher)) {
+    if (surface_ && !surface_mesher_)
+      throw InputError(scene.source.string() + ":/output/formats",
+                       "\"surface\" needs a surface mesher: this program was built without "
+                       "upf_surface (OpenVDB)");
     if (enabled_ || ply_ || surface_) ensure_directory(out_dir / "frames");
     for (auto& b : world_.body_systems()) b->open_outputs(out_dir, enabled_);
   }
@@ -108,9 +113,7 @@ class FrameWriter {
   // The liquid's surface (output/liquid_surface.h) as frames/surface_NNNNN.ply for renderers and
   // .vtp for ParaView; returns the .vtp's name for the .pvd.
   std::string write_surface(const Particles& particles) const {
-    LiquidSurfaceOptions options;
-    options.threads = world_.executor().threads();
-    const MeshPiece mesh = liquid_surface_mesh(particles, spacing_, options);
+    const MeshPiece mesh = surface_mesher_(particles, spacing_, world_.executor().threads());
     char name[64];
     std::snprintf(name, sizeof name, "frames/surface_%05d.ply", frames_);
     write_mesh_ply(out_dir_ / name, mesh);
@@ -127,6 +130,7 @@ class FrameWriter {
   double spacing_;
   PvdSeries series_;
   World& world_;
+  SurfaceMesher surface_mesher_;
   int frames_ = 0;
 };
 
@@ -262,7 +266,8 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     (void)read_header(*resume);
     world->restore_state(*resume);
   }
-  FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames, *world);
+  FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames, *world,
+                     options.surface_mesher);
   MetricsLog metrics(options.out_dir / "metrics.csv", options.resume);
   std::vector<std::string> probe_names;
   for (const auto& p : scene.probes) probe_names.push_back(p.name);
