@@ -125,10 +125,11 @@ TEST(DemLinear, SphereOnAWallMatchesRestitutionAndContactTime) {
     const double dt = tc / 400;
     nlohmann::json mat = {
         {"density", density}, {"normal_stiffness", kn}, {"restitution", e}, {"friction", 0.0}};
-    TestWorld t(
-        grain_scene(mat, "dem_linear", {0, 0, 0},
-                    {grain("sand", {r + 0.001, 0.05, 0.05}, r, {-0.5, 0, 0})}, dt, {0.3, 0.1, 0.1}),
-        2);
+    TestWorld t(grain_scene(mat, "dem_linear", {0, 0, 0},
+                            nlohmann::json::array(
+                                {grain("sand", {r + 0.001, 0.05, 0.05}, r, {-0.5, 0, 0})}),
+                            dt, {0.3, 0.1, 0.1}),
+                2);
     const Particles& p = t.world->particles();
     const Impact i = measure_impact(
         t, dt, [&] { return double(p.position[grains(p)[0]].x) < r; },
@@ -171,7 +172,8 @@ double incline_acceleration(double theta_degrees, double mu) {
       {"density", 2500}, {"normal_stiffness", 1e5}, {"restitution", 0.3}, {"friction", mu}};
   const double r = 0.01;
   TestWorld t(grain_scene(mat, "dem_linear", {g * std::sin(th), -g * std::cos(th), 0},
-                          {grain("sand", {0.1, r, 0.1}, r, {0, 0, 0})}, 2e-5, {1.5, 0.2, 0.2}),
+                          nlohmann::json::array({grain("sand", {0.1, r, 0.1}, r, {0, 0, 0})}), 2e-5,
+                          {1.5, 0.2, 0.2}),
               2);
   const Particles& p = t.world->particles();
   t.run_until(0.05);  // the normal bounce of the start dies out
