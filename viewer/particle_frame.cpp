@@ -25,9 +25,12 @@ render::PolyData to_poly_data(const Particles& p) {
   scalar("type", [&](std::size_t i) { return double(int(p.type[i])); });
   scalar("material", [&](std::size_t i) { return double(p.material[i]); });
   vector("velocity", p.velocity);
-  for (const auto& [name, field] : p.scalar_fields())
-    if (field.exported && field.values.size() == n)
-      scalar(name, [&](std::size_t i) { return double(field.values[i]); });
+  for (const auto& [name, field] : p.scalar_fields()) {
+    // clang 14 cannot capture a structured binding: capture the values by a plain reference.
+    const std::vector<Real>& values = field.values;
+    if (field.exported && values.size() == n)
+      scalar(name, [&values](std::size_t i) { return double(values[i]); });
+  }
   for (const auto& [name, field] : p.vector_fields())
     if (field.exported && field.values.size() == n && name != "velocity")
       vector(name, field.values);

@@ -17,6 +17,7 @@
 
 #include "framework/output/atomic_file.h"
 #include "framework/output/type_palette.h"
+#include "framework/particles/array_sizes.h"
 
 namespace upf {
 
@@ -27,14 +28,6 @@ static_assert(std::is_same_v<ParticleId, std::uint32_t>, "id is written as uint"
 static_assert(std::is_same_v<MaterialId, std::uint16_t>, "material is written as ushort");
 static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559,
               "PLY float is an IEEE 754 single");
-
-void check_size(const std::string& name, std::size_t values, std::size_t n) {
-  // A short array would make the writer read past its end.
-  if (values != n) {
-    throw std::logic_error("write_ply_points: field '" + name + "' has " + std::to_string(values) +
-                           " values for " + std::to_string(n) + " particles");
-  }
-}
 
 // Appends `value` to `out` in little-endian byte order, whatever the host's.
 template <class T>
@@ -69,10 +62,7 @@ std::string ply_property_name(std::string_view name) {
 void write_ply_points(const std::filesystem::path& path, const Particles& particles,
                       const std::vector<std::string>& fields) {
   const std::size_t n = particles.size();
-  check_size("velocity", particles.velocity.size(), n);
-  check_size("type", particles.type.size(), n);
-  check_size("material", particles.material.size(), n);
-  check_size("id", particles.id.size(), n);
+  check_array_sizes(particles, "write_ply_points");
 
   std::string header =
       "ply\n"
@@ -105,7 +95,6 @@ void write_ply_points(const std::filesystem::path& path, const Particles& partic
     const std::string base = ply_property_name(name);
     if (const auto* s = particles.find_scalar(name)) {
       if (properties.count(base)) continue;
-      check_size(name, s->size(), n);
       written.insert(name);
       properties.insert(base);
       header += "property float " + base + "\n";
@@ -115,7 +104,6 @@ void write_ply_points(const std::filesystem::path& path, const Particles& partic
       const std::string names[3] = {base + "_x", base + "_y", base + "_z"};
       if (properties.count(names[0]) || properties.count(names[1]) || properties.count(names[2]))
         continue;
-      check_size(name, v->size(), n);
       written.insert(name);
       for (const std::string& p : names) {
         properties.insert(p);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "framework/output/vtk_appended_data.h"
+#include "framework/particles/array_sizes.h"
 
 namespace upf {
 
@@ -27,14 +28,6 @@ static_assert(std::is_same_v<MaterialId, std::uint16_t>, "material is written as
 constexpr const char* kRealType = std::is_same_v<Real, double> ? "Float64" : "Float32";
 
 using vtk_xml::make_array;
-
-void check_size(const std::string& name, std::size_t values, std::size_t n) {
-  // A short array would silently shift every later array in the appended block.
-  if (values != n) {
-    throw std::logic_error("write_vtp: field '" + name + "' has " + std::to_string(values) +
-                           " values for " + std::to_string(n) + " particles");
-  }
-}
 
 }  // namespace
 
@@ -68,10 +61,7 @@ std::string xml_escape(std::string_view s) {
 void write_vtp(const std::filesystem::path& path, const Particles& particles,
                const std::vector<std::string>& fields) {
   const std::size_t n = particles.size();
-  check_size("velocity", particles.velocity.size(), n);
-  check_size("type", particles.type.size(), n);
-  check_size("material", particles.material.size(), n);
-  check_size("id", particles.id.size(), n);
+  check_array_sizes(particles, "write_vtp");
 
   std::vector<vtk_xml::Array> point_data = {
       make_array("id", "UInt32", 1, particles.id),
@@ -84,10 +74,8 @@ void write_vtp(const std::filesystem::path& path, const Particles& particles,
     if (!written.insert(name).second)
       continue;  // VTK keeps one array per name: a repeat is dead weight
     if (const auto* s = particles.find_scalar(name)) {
-      check_size(name, s->size(), n);
       point_data.push_back(make_array(name, kRealType, 1, *s));
     } else if (const auto* v = particles.find_vector(name)) {
-      check_size(name, v->size(), n);
       point_data.push_back(make_array(name, kRealType, 3, *v));
     }
   }

@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
+#include "framework/particles/array_sizes.h"
 #include "framework/particles/particles.h"
 
 namespace upf {
@@ -276,6 +278,26 @@ TEST(Particles, RemoveKeepsOrderIdsAndNamedFieldsOfTheRest) {
   EXPECT_EQ(p.boundary_volume.size(), 7u);
   // New particles keep counting ids from where they were.
   EXPECT_EQ(p.id[p.add({}, {}, Real(1), ParticleType::Liquid, 0)], 10u);
+}
+
+TEST(Particles, CheckArraySizesNamesTheCallerAndTheShortArray) {
+  Particles p;
+  p.scalar_field("test.s");
+  for (std::uint32_t k = 0; k < 4; ++k) add_numbered(p, k);
+  EXPECT_NO_THROW(check_array_sizes(p, "writer"));
+
+  Particles short_builtin = p;
+  short_builtin.material.pop_back();
+  try {
+    check_array_sizes(short_builtin, "write_vtp");
+    FAIL() << "a short built-in array passed";
+  } catch (const std::logic_error& e) {
+    EXPECT_STREQ(e.what(), "write_vtp: particle array 'material' has 3 values for 4 particles");
+  }
+
+  Particles short_field = p;
+  short_field.scalar_field("test.s").resize(6);
+  EXPECT_THROW(check_array_sizes(short_field, "w"), std::logic_error);
 }
 
 }  // namespace
