@@ -18,6 +18,7 @@
 #include "render/image.h"
 #include "viewer/orbit_camera.h"
 #include "viewer/particle_frame.h"
+#include "viewer/pin_loaded_libraries.h"
 #include "viewer/view_source.h"
 
 namespace upf::viewer {
@@ -165,6 +166,7 @@ int run_viewer(const ViewOptions& options, const Registry& registry) {
     return 1;
   }
   glfwMakeContextCurrent(window.handle);
+  pin_loaded_libraries();
   glfwSwapInterval(exit_after > 0 ? 0 : 1);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
