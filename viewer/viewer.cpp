@@ -200,14 +200,32 @@ int run_viewer(const ViewOptions& options, const Registry& registry) {
   double frame_seconds = 1.0 / 30;  // simulated time per tick of a live scene
   if (live && live->edited().output.fps > 0) frame_seconds = 1.0 / live->edited().output.fps;
 
+  bool step = false;  // the Step button of the previous tick
   while (!glfwWindowShouldClose(window.handle)) {
     glfwPollEvents();
+
+    // Time moves on first, so the panel's statistics describe the picture drawn below.
+    if (playing || step) {
+      if (run) {
+        if (run->index() + 1 < run->count()) {
+          run->show(run->index() + 1);
+          dirty = true;
+        } else {
+          playing = false;
+        }
+      } else {
+        live->advance(step ? 0 : frame_seconds, step ? 0 : 0.1);
+        if (!live->error().empty()) playing = false;
+        dirty = true;
+      }
+      step = false;
+    }
+
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     ImGuiIO& io = ImGui::GetIO();
 
-    bool step = false;
     // Below the picture's title and time (top left).
     ImGui::SetNextWindowPos(ImVec2(10, 50), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
@@ -281,22 +299,6 @@ int run_viewer(const ViewOptions& options, const Registry& registry) {
       }
       if (io.MouseWheel != 0) {
         orbit.zoom(io.MouseWheel);
-        dirty = true;
-      }
-    }
-
-    // Time moves on.
-    if (playing || step) {
-      if (run) {
-        if (run->index() + 1 < run->count()) {
-          run->show(run->index() + 1);
-          dirty = true;
-        } else {
-          playing = false;
-        }
-      } else {
-        live->advance(step ? 0 : frame_seconds, step ? 0 : 0.1);
-        if (!live->error().empty()) playing = false;
         dirty = true;
       }
     }
