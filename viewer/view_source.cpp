@@ -9,7 +9,7 @@
 #include "framework/scene/json_input.h"
 #include "framework/scene/scene_builder.h"
 #include "framework/scene/scene_reader.h"
-#include "viewer/particle_frame.h"
+#include "render/world_frame.h"
 
 namespace upf::viewer {
 
@@ -75,9 +75,7 @@ bool LiveScene::advance(double sim_seconds, double wall_seconds) {
 }
 
 void LiveScene::convert() {
-  frame_.time = world_->time();
-  frame_.particles = to_poly_data(world_->particles());
-  frame_.meshes.clear();
+  frame_ = render::world_frame(*world_);
 }
 
 }  // namespace upf::viewer

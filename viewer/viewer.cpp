@@ -17,7 +17,7 @@
 #include "framework/core/errors.h"
 #include "render/image.h"
 #include "viewer/orbit_camera.h"
-#include "viewer/particle_frame.h"
+#include "viewer/frame_scale.h"
 #include "viewer/pin_loaded_libraries.h"
 #include "viewer/view_source.h"
 

@@ -292,20 +292,27 @@ void RigidBodySystem::open_outputs(const std::filesystem::path& out_dir, bool wr
   csv_ << "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,fx,fy,fz,tx,ty,tz\n";
 }
 
+std::vector<MeshPiece> RigidBodySystem::surface_meshes() const {
+  // Each body's mesh in its current pose: x = X + R r0 over the body-frame vertices.
+  std::vector<MeshPiece> pieces;
+  for (const Body& b : bodies_) {
+    const btTransform& tr = b.rigid->getCenterOfMassTransform();
+    MeshPiece piece;
+    piece.name = b.source.name;
+    for (const auto& r : b.local_vertices) piece.vertices.push_back(from_bt(tr * upf::to_bt(r)));
+    piece.triangles = b.source.mesh.triangles;
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
 std::vector<std::string> RigidBodySystem::write_frame(const std::filesystem::path& out_dir,
                                                       int frame, double time) {
   std::vector<std::string> files;
   if (write_meshes_) {
-    // Each body's mesh in its current pose: x = X + R r0 over the body-frame vertices.
-    std::vector<MeshPiece> pieces;
+    const std::vector<MeshPiece> pieces = surface_meshes();
     std::vector<double> speed, force;
     for (const Body& b : bodies_) {
-      const btTransform& tr = b.rigid->getCenterOfMassTransform();
-      MeshPiece piece;
-      piece.name = b.source.name;
-      for (const auto& r : b.local_vertices) piece.vertices.push_back(from_bt(tr * upf::to_bt(r)));
-      piece.triangles = b.source.mesh.triangles;
-      pieces.push_back(std::move(piece));
       speed.push_back(b.state.velocity.norm());
       force.push_back(b.state.fluid_force.norm());
     }

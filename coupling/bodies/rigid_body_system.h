@@ -79,6 +79,7 @@ class RigidBodySystem : public BodySystem {
   void place_particles(World& world, double dt) override;
   void advance(World& world, double dt) override;
   double max_time_step(const World& world) const override;
+  std::vector<MeshPiece> surface_meshes() const override;
   void open_outputs(const std::filesystem::path& out_dir, bool write_frames) override;
   std::vector<std::string> write_frame(const std::filesystem::path& out_dir, int frame,
                                        double time) override;

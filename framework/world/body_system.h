@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "framework/core/real.h"
+#include "framework/output/mesh_vtp_writer.h"
 
 namespace upf {
 
@@ -40,6 +41,10 @@ class BodySystem {
   virtual void advance(World& world, double dt) = 0;
   // The largest step the bodies allow (fast bodies must not cross a particle per step).
   virtual double max_time_step(const World&) const { return std::numeric_limits<double>::max(); }
+
+  // The bodies' surfaces in their current pose, one piece per body, for a viewer stepping the
+  // world live; empty for a system without meshes.
+  virtual std::vector<MeshPiece> surface_meshes() const { return {}; }
 
   // Outputs, called by the run: `open` once before the first frame; `write_frame` per frame
   // returns the files it wrote (relative to out_dir) so they join the frame's .pvd entry.

@@ -7,16 +7,24 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "framework/core/errors.h"
 #include "framework/output/mesh_vtp_writer.h"
 #include "framework/output/vtp_writer.h"
 #include "framework/particles/particles.h"
+#include "framework/world/body_system.h"
+#include "framework/world/world.h"
 #include "render/camera.h"
 #include "render/frame_picture.h"
 #include "render/ray_tracer.h"
 #include "render/run_frames.h"
 #include "render/vtp_reader.h"
+#include "render/world_frame.h"
 #include "render/xml_tags.h"
 
 namespace upf::render {
@@ -70,6 +78,49 @@ TEST_F(RenderTest, ReadsBackBodyMeshes) {
   ASSERT_EQ(d.triangles.size(), 2u);
   EXPECT_EQ(d.triangles[1], (std::array<std::uint32_t, 3>{3, 4, 5}));
   EXPECT_EQ(d.cell_array("body")->values, (std::vector<double>{0, 1}));
+}
+
+// A body system with fixed surfaces, standing in for the Bullet bodies of coupling/.
+class FixedMeshes : public BodySystem {
+ public:
+  explicit FixedMeshes(std::vector<MeshPiece> pieces) : pieces_(std::move(pieces)) {}
+  std::string_view name() const override { return "fixed"; }
+  void prepare(World&) override {}
+  void place_particles(World&, double) override {}
+  void advance(World&, double) override {}
+  std::vector<MeshPiece> surface_meshes() const override { return pieces_; }
+  void open_outputs(const fs::path&, bool) override {}
+  std::vector<std::string> write_frame(const fs::path&, int, double) override { return {}; }
+
+ private:
+  std::vector<MeshPiece> pieces_;
+};
+
+// A world stepped live (upf view) is drawn from exactly what its saved frame would read back
+// as: the particles' arrays and the bodies' triangles with their "body" cell array.
+TEST_F(RenderTest, LiveWorldFrameIsWhatTheSavedFrameReadsBackAs) {
+  World world(WorldSettings{}, 1);
+  world.particles() = two_liquid_particles(0.25, 0.75);
+  world.particles().add({1, 2, 3}, {0, 1, 0}, 1, ParticleType::Rigid, 1, 0);
+  const MeshPiece tri{"t", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}};
+  const MeshPiece moved{"u", {{0, 0, 1}, {1, 0, 1}, {0, 1, 1.5}}, {{0, 2, 1}}};
+  world.add_body_system(std::make_unique<FixedMeshes>(std::vector<MeshPiece>{tri, moved}));
+
+  const FrameData live = world_frame(world);
+  write_vtp(dir_ / "f.vtp", world.particles(), {"heat"});
+  write_mesh_vtp(dir_ / "m.vtp", {tri, moved}, {});
+  const PolyData saved = read_vtp(dir_ / "f.vtp"), saved_mesh = read_vtp(dir_ / "m.vtp");
+
+  EXPECT_EQ(live.time, world.time());
+  EXPECT_EQ(live.particles.points, saved.points);
+  for (const char* name : {"type", "material", "velocity", "heat"}) {
+    ASSERT_NE(live.particles.point_array(name), nullptr) << name;
+    EXPECT_EQ(live.particles.point_array(name)->values, saved.point_array(name)->values) << name;
+  }
+  ASSERT_EQ(live.meshes.size(), 1u);
+  EXPECT_EQ(live.meshes[0].points, saved_mesh.points);
+  EXPECT_EQ(live.meshes[0].triangles, saved_mesh.triangles);
+  EXPECT_EQ(live.meshes[0].cell_array("body")->values, saved_mesh.cell_array("body")->values);
 }
 
 TEST_F(RenderTest, DamagedFramesAreBadInputNamingTheFile) {
