@@ -116,6 +116,20 @@ std::optional<std::array<double, 2>> field_percentiles(const PolyData& p,
                                v[std::size_t(0.99 * double(v.size() - 1))]};
 }
 
+std::array<double, 2> widened_if_flat(std::array<double, 2> range) {
+  const auto [low, high] = range;
+  if (high - low < 1e-12 * std::max(1.0, std::abs(high))) return {low - 0.5, high + 0.5};
+  return range;
+}
+
+FrameData read_frame(const RunFrame& f) {
+  FrameData data;
+  data.time = f.time;
+  data.particles = read_vtp(f.parts.front());
+  for (std::size_t k = 1; k < f.parts.size(); ++k) data.meshes.push_back(read_vtp(f.parts[k]));
+  return data;
+}
+
 Camera camera_for_particles(const PolyData& particles, const Eigen::Vector3d& up, double aspect) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
   for (const auto& x : particles.points) {

@@ -9,6 +9,7 @@
 
 #include "render/image.h"
 #include "render/render_settings.h"
+#include "render/run_frames.h"
 #include "render/vtp_reader.h"
 
 namespace upf::render {
@@ -19,6 +20,10 @@ struct FrameData {
   PolyData particles;
   std::vector<PolyData> meshes;
 };
+
+// Reads a saved frame: its first part is the particles, the others are meshes. Throws InputError
+// naming a damaged file.
+FrameData read_frame(const RunFrame& frame);
 
 // The field values a picture colours by, mapped onto [low, high].
 struct ColourScale {
@@ -46,6 +51,10 @@ std::vector<std::string> colour_choices(const PolyData& particles);
 
 // The 1st and 99th percentiles of `field` over the moving (liquid and granular) particles;
 // nullopt when none has a finite value.
+// `range`, or 0.5 either side of it when it is a single value (a field constant everywhere),
+// so that colours stay defined.
+std::array<double, 2> widened_if_flat(std::array<double, 2> range);
+
 std::optional<std::array<double, 2>> field_percentiles(const PolyData& particles,
                                                        const std::string& field);
 

@@ -44,14 +44,6 @@ double estimate_spacing(const PolyData& p) {
   return nearest[nearest.size() / 2];
 }
 
-FrameData read_frame(const RunFrame& f) {
-  FrameData data;
-  data.time = f.time;
-  data.particles = read_vtp(f.parts.front());
-  for (std::size_t k = 1; k < f.parts.size(); ++k) data.meshes.push_back(read_vtp(f.parts[k]));
-  return data;
-}
-
 // The 1st and 99th percentiles of the field over the moving particles, widest over all frames,
 // so every picture of a run shares one scale.
 std::array<double, 2> auto_range(const std::vector<RunFrame>& frames, const std::string& field) {
@@ -63,8 +55,7 @@ std::array<double, 2> auto_range(const std::vector<RunFrame>& frames, const std:
     }
   }
   if (low > high) return {0, 1};
-  if (high - low < 1e-12 * std::max(1.0, std::abs(high))) return {low - 0.5, high + 0.5};
-  return {low, high};
+  return widened_if_flat({low, high});
 }
 
 bool on_path(const std::string& program) {

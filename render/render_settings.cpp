@@ -1,6 +1,9 @@
 #include "render/render_settings.h"
 
+#include <exception>
 #include <memory>
+
+#include "framework/core/errors.h"
 
 #include "framework/scene/json_input.h"
 #include "framework/scene/scene_section.h"
@@ -14,7 +17,47 @@ struct RenderSectionData : SceneSectionData {
   RenderSettings settings;
 };
 
+constexpr int kMinPixels = 16, kMaxPixels = 8192;
+
 }  // namespace
+
+const char* wall_style_name(WallStyle style) {
+  switch (style) {
+    case WallStyle::Glass:
+      return "glass";
+    case WallStyle::Solid:
+      return "solid";
+    case WallStyle::Hidden:
+      return "hidden";
+  }
+  return "glass";
+}
+
+std::optional<WallStyle> wall_style_named(const std::string& name) {
+  for (WallStyle w : {WallStyle::Glass, WallStyle::Solid, WallStyle::Hidden})
+    if (name == wall_style_name(w)) return w;
+  return std::nullopt;
+}
+
+std::pair<int, int> parse_picture_size(const std::string& text, const std::string& option) {
+  const auto x = text.find('x');
+  int w = -1, h = -1;
+  try {
+    std::size_t used_w = 0, used_h = 0;
+    if (x != std::string::npos) {
+      w = std::stoi(text.substr(0, x), &used_w);
+      h = std::stoi(text.substr(x + 1), &used_h);
+      if (used_w != x || used_h != text.size() - x - 1) w = h = -1;
+    }
+  } catch (const std::exception&) {
+    w = h = -1;
+  }
+  if (w < kMinPixels || h < kMinPixels || w > kMaxPixels || h > kMaxPixels)
+    throw InputError(option, "\"" + text + "\": expected WIDTHxHEIGHT, each " +
+                                 std::to_string(kMinPixels) + " to " + std::to_string(kMaxPixels) +
+                                 " pixels (1280x720)");
+  return {w, h};
+}
 
 void read_render_settings(const nlohmann::json& node, const std::string& path, JsonInput& input,
                           RenderSettings& settings) {
@@ -43,10 +86,10 @@ void read_render_settings(const nlohmann::json& node, const std::string& path, J
       }
     }
   }
-  settings.width =
-      int(input.number(node, path, "width", settings.width, 16, 8192, false, "pixels"));
-  settings.height =
-      int(input.number(node, path, "height", settings.height, 16, 8192, false, "pixels"));
+  settings.width = int(
+      input.number(node, path, "width", settings.width, kMinPixels, kMaxPixels, false, "pixels"));
+  settings.height = int(
+      input.number(node, path, "height", settings.height, kMinPixels, kMaxPixels, false, "pixels"));
   settings.samples_per_axis =
       int(input.number(node, path, "samples", settings.samples_per_axis, 1, 8, false));
   if (auto c = input.string(node, path, "color_by", false)) {
@@ -66,12 +109,8 @@ void read_render_settings(const nlohmann::json& node, const std::string& path, J
       settings.range = std::array<double, 2>{(*it)[0].get<double>(), (*it)[1].get<double>()};
   }
   if (auto w = input.string(node, path, "walls", false)) {
-    if (*w == "glass")
-      settings.walls = WallStyle::Glass;
-    else if (*w == "solid")
-      settings.walls = WallStyle::Solid;
-    else if (*w == "hidden")
-      settings.walls = WallStyle::Hidden;
+    if (auto style = wall_style_named(*w))
+      settings.walls = *style;
     else
       input.problem(JsonInput::child(path, "walls"),
                     "unknown wall style \"" + *w + "\" (known: \"glass\", \"solid\", \"hidden\")");

@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -29,6 +30,14 @@ struct RenderSettings {
   std::optional<std::array<double, 2>> range;  // absent: the 1st..99th percentile over the run
   WallStyle walls = WallStyle::Glass;          // frozen particles on the camera's side
 };
+
+// "glass", "solid", "hidden": the names scene files, `upf render --walls` and the viewer use.
+const char* wall_style_name(WallStyle style);
+std::optional<WallStyle> wall_style_named(const std::string& name);
+
+// Parses "WIDTHxHEIGHT" (each a whole number of 16 to 8192 pixels, the "render" section's
+// range). Throws InputError naming `option` otherwise.
+std::pair<int, int> parse_picture_size(const std::string& text, const std::string& option);
 
 // Reads the "render" object at JSON path `path` into `settings` (keys absent keep their value).
 // Every problem goes to `input`.

@@ -15,10 +15,9 @@ std::optional<render::ColourScale> frame_scale(const render::PolyData& p,
     scale.low = (*r)[0];
     scale.high = (*r)[1];
   }
-  if (scale.high - scale.low < 1e-12 * std::max(1.0, std::abs(scale.high))) {
-    scale.low -= 0.5;
-    scale.high += 0.5;
-  }
+  const auto [low, high] = render::widened_if_flat({scale.low, scale.high});
+  scale.low = low;
+  scale.high = high;
   return scale;
 }
 

@@ -22,13 +22,7 @@ RunFrames::RunFrames(const fs::path& run_dir) : frames_(render::read_run_frames(
 
 void RunFrames::show(int k) {
   index_ = std::clamp(k, 0, count() - 1);
-  const render::RunFrame& f = frames_[std::size_t(index_)];
-  render::FrameData data;
-  data.time = f.time;
-  data.particles = render::read_vtp(f.parts.front());
-  for (std::size_t p = 1; p < f.parts.size(); ++p)
-    data.meshes.push_back(render::read_vtp(f.parts[p]));
-  frame_ = std::move(data);
+  frame_ = render::read_frame(frames_[std::size_t(index_)]);
 }
 
 LiveScene::LiveScene(const fs::path& scene_file, const Registry& registry, int threads)

@@ -16,8 +16,8 @@
 
 #include "framework/core/errors.h"
 #include "render/image.h"
-#include "viewer/orbit_camera.h"
 #include "viewer/frame_scale.h"
+#include "viewer/orbit_camera.h"
 #include "viewer/pin_loaded_libraries.h"
 #include "viewer/view_source.h"
 
@@ -26,37 +26,6 @@ namespace upf::viewer {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::pair<int, int> parse_size(const std::string& text) {
-  const auto x = text.find('x');
-  int w = -1, h = -1;
-  try {
-    std::size_t used_w = 0, used_h = 0;
-    if (x != std::string::npos) {
-      w = std::stoi(text.substr(0, x), &used_w);
-      h = std::stoi(text.substr(x + 1), &used_h);
-      if (used_w != x || used_h != text.size() - x - 1) w = h = -1;
-    }
-  } catch (const std::exception&) {
-    w = h = -1;
-  }
-  if (w < 16 || h < 16 || w > 8192 || h > 8192)
-    throw InputError("--size",
-                     "\"" + text + "\": expected WIDTHxHEIGHT, each 16 to 8192 pixels (1280x720)");
-  return {w, h};
-}
-
-const char* wall_name(render::WallStyle w) {
-  switch (w) {
-    case render::WallStyle::Glass:
-      return "glass";
-    case render::WallStyle::Solid:
-      return "solid";
-    case render::WallStyle::Hidden:
-      return "hidden";
-  }
-  return "glass";
-}
 
 // The window's pixels (the back buffer, before it is swapped), top row first.
 render::Image read_back(int width, int height) {
@@ -138,7 +107,7 @@ std::string no_display_message() {
 }
 
 int run_viewer(const ViewOptions& options, const Registry& registry) {
-  const auto [width, height] = parse_size(options.size);
+  const auto [width, height] = render::parse_picture_size(options.size, "--size");
   if (options.exit_after < 0) throw InputError("--exit-after", "expected a whole number >= 1");
   const int exit_after =
       options.exit_after > 0 ? options.exit_after : (options.screenshot.empty() ? 0 : 3);
@@ -254,9 +223,9 @@ int run_viewer(const ViewOptions& options, const Registry& registry) {
         }
       ImGui::EndCombo();
     }
-    if (ImGui::BeginCombo("walls", wall_name(context.settings.walls))) {
+    if (ImGui::BeginCombo("walls", render::wall_style_name(context.settings.walls))) {
       for (auto w : {render::WallStyle::Glass, render::WallStyle::Solid, render::WallStyle::Hidden})
-        if (ImGui::Selectable(wall_name(w), w == context.settings.walls)) {
+        if (ImGui::Selectable(render::wall_style_name(w), w == context.settings.walls)) {
           context.settings.walls = w;
           dirty = true;
         }

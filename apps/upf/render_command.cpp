@@ -25,13 +25,7 @@ int parse_whole(const std::string& text, const std::string& option) {
 render::RenderOverrides overrides_of(const RenderArgs& args) {
   render::RenderOverrides o;
   if (!args.size.empty()) {
-    const auto x = args.size.find('x');
-    const int w = x == std::string::npos ? -1 : parse_whole(args.size.substr(0, x), "--size");
-    const int h = x == std::string::npos ? -1 : parse_whole(args.size.substr(x + 1), "--size");
-    if (w < 16 || h < 16 || w > 8192 || h > 8192)
-      throw InputError(
-          "--size",
-          "\"" + args.size + "\": expected WIDTHxHEIGHT, each 16 to 8192 pixels (1280x720)");
+    const auto [w, h] = render::parse_picture_size(args.size, "--size");
     o.width = w;
     o.height = h;
   }
@@ -42,9 +36,7 @@ render::RenderOverrides overrides_of(const RenderArgs& args) {
       throw InputError("--range", "expected LOW,HIGH with LOW < HIGH");
     o.range = std::array<double, 2>{args.range[0], args.range[1]};
   }
-  if (args.walls == "glass") o.walls = render::WallStyle::Glass;
-  if (args.walls == "solid") o.walls = render::WallStyle::Solid;
-  if (args.walls == "hidden") o.walls = render::WallStyle::Hidden;
+  if (!args.walls.empty()) o.walls = render::wall_style_named(args.walls);
   return o;
 }
 
