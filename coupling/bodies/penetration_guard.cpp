@@ -1,5 +1,6 @@
 #include "coupling/bodies/penetration_guard.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "framework/core/vec3_eigen.h"
@@ -63,6 +64,7 @@ const std::vector<SurfaceImpulse>& PenetrationGuard::apply(
     const Eigen::Vector3d vi = to_eigen(v[i]);
     const double approach = n.dot(vi - vb);  // < 0: moving into the body
     SurfaceImpulse& s = per_particle_[i];
+    s.particle = p.id[i];
     s.body = std::uint32_t(owner);
     s.point = surface;
     s.impulse = Eigen::Vector3d::Zero();
@@ -74,6 +76,8 @@ const std::vector<SurfaceImpulse>& PenetrationGuard::apply(
   });
   for (std::size_t i = 0; i < p.size(); ++i)
     if (hit_[i]) impulses_.push_back(per_particle_[i]);
+  std::sort(impulses_.begin(), impulses_.end(),
+            [](const SurfaceImpulse& a, const SurfaceImpulse& b) { return a.particle < b.particle; });
   return impulses_;
 }
 

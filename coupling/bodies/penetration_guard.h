@@ -37,6 +37,7 @@ struct BodyFrame {
 
 // Momentum a fluid particle gave a body by being stopped at its surface.
 struct SurfaceImpulse {
+  std::uint32_t particle = 0;  // the fluid particle's stable id
   std::uint32_t body = 0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // where, world coordinates
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  // N s, on the body
@@ -54,7 +55,8 @@ class PenetrationGuard {
 
   // Moves the fluid particles that are inside a body, given each body's end-of-step frame and
   // its mesh in the body frame (null: open, not guarded), and returns the impulses on the bodies
-  // in particle order (a fixed order for any thread count).
+  // in the order of the particles' stable ids (the same for any thread count and any order of
+  // the particles in memory).
   const std::vector<SurfaceImpulse>& apply(World& world, const std::vector<BodyFrame>& frames,
                                            const std::vector<const MeshInsideTest*>& meshes);
 

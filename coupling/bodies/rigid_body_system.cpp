@@ -2,12 +2,14 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
 
 #include "coupling/mesh/closed_mesh.h"
 #include "framework/checkpoint/state_stream.h"
+#include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
 #include "framework/core/vec3_eigen.h"
 #include "framework/output/mesh_vtp_writer.h"
@@ -134,8 +136,6 @@ void RigidBodySystem::add_particles(Particles& particles) const {
 }
 
 void RigidBodySystem::prepare(World& world) {
-  Particles& p = world.particles();
-  if (p.count(ParticleType::Rigid) > 0) p.vector_field(kBoundaryForceField);
   // Akinci volumes, over each particle's own body, are World::prepare's.
   guard_.request(world);
 }
@@ -202,21 +202,31 @@ void RigidBodySystem::place_particles(World& world, double dt) {
 }
 
 void RigidBodySystem::advance(World& world, double dt) {
-  std::vector<Eigen::Vector3d> force(bodies_.size(), Eigen::Vector3d::Zero());
-  std::vector<Eigen::Vector3d> torque(bodies_.size(), Eigen::Vector3d::Zero());
+  // Fixed-point sums: the same bits whatever order the particles are in (they are reordered for
+  // locality), so a body scene is identical for any thread count and any reordering.
+  std::vector<std::array<FixedPointAccumulator, 6>> sums(bodies_.size());
   Particles& p = world.particles();
-  if (const std::vector<Vec3>* reaction = p.find_vector(kBoundaryForceField)) {
+  if (const std::vector<Vec3>* reaction = &world.coupling()[CouplingArray::BoundaryForce];
+      !reaction->empty()) {
     std::vector<Eigen::Vector3d> origin(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b)
       origin[b] = from_bt(bodies_[b].rigid->getCenterOfMassPosition());
-    // One thread, index order: a fixed order of additions (see the header).
     for (std::size_t i = 0; i < p.size(); ++i) {
       const BodyId b = p.body[i];
       if (b == kNoBody || p.type[i] != ParticleType::Rigid) continue;
       const Eigen::Vector3d f = to_eigen((*reaction)[i]);
-      force[std::size_t(b)] += f;
-      torque[std::size_t(b)] += (to_eigen(p.position[i]) - origin[std::size_t(b)]).cross(f);
+      const Eigen::Vector3d tau = (to_eigen(p.position[i]) - origin[std::size_t(b)]).cross(f);
+      std::array<FixedPointAccumulator, 6>& s = sums[std::size_t(b)];
+      for (int a = 0; a < 3; ++a) {
+        s[std::size_t(a)].add(f[a]);
+        s[std::size_t(a + 3)].add(tau[a]);
+      }
     }
+  }
+  std::vector<Eigen::Vector3d> force(bodies_.size()), torque(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    force[b] = {sums[b][0].value(), sums[b][1].value(), sums[b][2].value()};
+    torque[b] = {sums[b][3].value(), sums[b][4].value(), sums[b][5].value()};
   }
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     Body& body = bodies_[b];
@@ -238,7 +248,7 @@ std::vector<Eigen::Vector3d> RigidBodySystem::guard_surfaces(World& world, doubl
   for (std::size_t b = 0; b < bodies_.size(); ++b) frames[b] = frame_of(bodies_[b], t);
   std::vector<Eigen::Vector3d> mean_force(bodies_.size(), Eigen::Vector3d::Zero());
   // The impulses change the bodies' velocities now, after Bullet's step: the stopped fluid's
-  // momentum goes to the body in the same step, in particle order.
+  // momentum goes to the body in the same step, in the order of the particles' stable ids.
   for (const SurfaceImpulse& s : guard_.apply(world, frames, guarded_meshes_)) {
     Body& body = bodies_[s.body];
     mean_force[s.body] += s.impulse / dt;

@@ -12,8 +12,9 @@
 // (compute_boundary_volumes, called once by World::prepare): a body's sampling does not change
 // as it moves past walls and other bodies.
 //
-// Per-body sums run over the particles in index order on one thread, and Bullet steps on one
-// thread: the same bits for any thread count.
+// Per-body sums of forces and torques are fixed-point (FixedPointAccumulator), the penetration
+// guard's impulses reach the bodies in particle-id order, and Bullet steps on one thread: the
+// same bits for any thread count and whatever order the particles are in memory.
 #pragma once
 
 #include <Eigen/Geometry>

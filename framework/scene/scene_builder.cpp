@@ -73,15 +73,13 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
   for (std::size_t i = 0; i < scene.materials.size(); ++i)
     if (!scene.materials[i].solver.empty())
       by_solver[scene.materials[i].solver].push_back(MaterialId(i));
-  // Granular solvers step first: the drag and buoyancy they put on grains come back to the
-  // liquid as a force (kLiquidCouplingForceField) that the fluid solvers apply in the same step.
-  for (bool granular : {true, false})
-    for (auto& [name, materials] : by_solver) {
-      const SolverInfo* info = registry.find_solver(name);
-      if ((info->type == ParticleType::Granular) != granular) continue;
-      const ParamValues& params = scene.materials[materials.front()].solver_params;
-      world->add_solver(info->create(params, materials));
-    }
+  // In name order; World::prepare orders them by what they declare to write and read (the
+  // grains' drag comes back to the liquid in the same step: granular before fluid solvers).
+  for (auto& [name, materials] : by_solver) {
+    const SolverInfo* info = registry.find_solver(name);
+    const ParamValues& params = scene.materials[materials.front()].solver_params;
+    world->add_solver(info->create(params, materials), info->coupling);
+  }
   return world;
 }
 

@@ -12,6 +12,7 @@
 #include "framework/params/param_spec.h"
 #include "framework/scene/scene_section.h"
 #include "framework/solver/solver.h"
+#include "framework/world/coupling.h"
 
 namespace upf {
 
@@ -25,6 +26,9 @@ struct SolverInfo {
   std::function<std::unique_ptr<Solver>(const ParamValues& values,
                                         std::vector<MaterialId> materials)>
       create;
+  // The coupling arrays the solver writes and reads (framework/world/coupling.h): the world
+  // orders solvers by them and refuses a scene whose reads nobody writes.
+  CouplingUse coupling;
 };
 
 class Registry {

@@ -3,8 +3,8 @@
 //
 //   1 place_particles: the system's particles follow their bodies, x = X + R r0,
 //     v = V + w x (x - X), before the neighbour grid is built;
-//   3 the solvers run; fluid solvers add their reactions on boundary particles into the field
-//     kBoundaryForceField (Akinci et al. 2012, eq. 11);
+//   3 the solvers run; fluid and granular solvers add their reactions on boundary particles into
+//     the world's coupling array CouplingArray::BoundaryForce (Akinci et al. 2012, eq. 11);
 //   4 advance: per body, the reactions are summed into a force and a torque and the bodies step.
 //
 // The framework only calls this interface; coupling/ implements it with Bullet.
@@ -24,10 +24,6 @@ namespace upf {
 class World;
 class StateWriter;
 class StateReader;
-
-// The per-particle force (N) that fluids exert on boundary particles during a step: a vector
-// field created by a body system that needs it, zeroed by the world before the solvers run.
-inline constexpr const char* kBoundaryForceField = "boundary_force";
 
 class BodySystem {
  public:

@@ -16,8 +16,35 @@ namespace upf {
 World::World(WorldSettings settings, int threads)
     : settings_(settings), executor_(threads), grid_(settings.support_radius()) {}
 
-void World::add_solver(std::unique_ptr<Solver> solver) {
+void World::add_solver(std::unique_ptr<Solver> solver, CouplingUse use) {
   solvers_.push_back(std::move(solver));
+  solver_uses_.push_back(std::move(use));
+}
+
+void World::order_solvers() {
+  std::vector<DeclaredSolver> declared;
+  for (std::size_t s = 0; s < solvers_.size(); ++s)
+    declared.push_back({std::string(solvers_[s]->name()), solver_uses_[s]});
+  const std::vector<std::size_t> order = coupling_order(declared);
+  std::vector<std::unique_ptr<Solver>> solvers;
+  std::vector<CouplingUse> uses;
+  for (std::size_t s : order) {
+    solvers.push_back(std::move(solvers_[s]));
+    uses.push_back(std::move(solver_uses_[s]));
+  }
+  solvers_ = std::move(solvers);
+  solver_uses_ = std::move(uses);
+  // An array is kept only where someone reads it: the body systems read the boundary forces.
+  auto read = [&](CouplingArray a) {
+    if (a == CouplingArray::BoundaryForce && !bodies_.empty()) return true;
+    for (const CouplingUse& u : solver_uses_)
+      for (const auto* list : {&u.reads, &u.reads_if_written})
+        if (std::find(list->begin(), list->end(), a) != list->end()) return true;
+    return false;
+  };
+  for (const CouplingUse& u : solver_uses_)
+    for (CouplingArray a : u.writes)
+      if (read(a)) coupling_.activate(a);
 }
 
 void World::add_body_system(std::unique_ptr<BodySystem> system) {
@@ -39,6 +66,7 @@ int World::request_neighbours(TypeMask query, TypeMask target, Real radius) {
 }
 
 void World::prepare() {
+  order_solvers();
   // Boundary particles keep their shape (walls stand still, a body moves as a whole), so their
   // volumes are computed once, here, each over its own body or over the walls.
   grid_.build(particles_, executor_);
@@ -110,10 +138,7 @@ void World::step(double dt) {
   report_.dt = dt;
   report_.neighbour_ms = neighbours.elapsed_ms();
 
-  if (std::vector<Vec3>* reactions = particles_.find_vector(kBoundaryForceField)) {
-    Vec3* f = reactions->data();
-    executor_.for_each(reactions->size(), [&](std::size_t i) { f[i] = Vec3{}; });
-  }
+  coupling_.reset(particles_.size());
   for (auto& s : solvers_) {
     s->step(*this, Real(dt));
     const SolverStats st = s->stats();

@@ -3,7 +3,8 @@
 // World::step(dt) (DESIGN.md, "One step"):
 //   1 body systems place their particles (rigid particles follow their bodies)
 //   2 neighbour grid update and the neighbour lists solvers asked for; reorder every K steps
-//   3 the boundary reaction field is zeroed, then each solver advances its own particles
+//   3 the coupling arrays are zeroed, then each solver advances its own particles, in an order
+//     where every coupling array is written before it is read (coupling.h)
 //   4 body systems sum the reactions per body and step their bodies (body_system.h)
 //   5 time += dt; stability check (NaN, runaway speed)
 #pragma once
@@ -20,6 +21,7 @@
 #include "framework/solver/solver.h"
 #include "framework/world/body_system.h"
 #include "framework/world/container_box.h"
+#include "framework/world/coupling.h"
 #include "framework/world/world_settings.h"
 
 namespace upf {
@@ -44,8 +46,13 @@ class World {
   const CpuExecutor& executor() const { return executor_; }
   CubicSplineKernel kernel() const { return CubicSplineKernel(settings_.support_radius()); }
 
-  void add_solver(std::unique_ptr<Solver> solver);
+  // `use`: the coupling arrays it writes and reads (its SolverInfo's declaration).
+  void add_solver(std::unique_ptr<Solver> solver, CouplingUse use = {});
+  // In stepping order once prepare() has run.
   const std::vector<std::unique_ptr<Solver>>& solvers() const { return solvers_; }
+  // The arrays that cross materials within a step (coupling.h).
+  CouplingArrays& coupling() { return coupling_; }
+  const CouplingArrays& coupling() const { return coupling_; }
   void add_body_system(std::unique_ptr<BodySystem> system);
   const std::vector<std::unique_ptr<BodySystem>>& body_systems() const { return bodies_; }
   void add_container(const ContainerBox& box) { containers_.push_back(box); }
@@ -58,8 +65,9 @@ class World {
   const NeighbourList& neighbours(int handle) const { return lists_.at(std::size_t(handle)).list; }
   const NeighbourGrid& grid() const { return grid_; }
 
-  // Boundary volumes of frozen and rigid particles (Akinci et al. 2012), every body system's
-  // prepare, then every solver's prepare.
+  // Orders the solvers by their coupling declarations (an InputError naming the solvers when a
+  // read has no writer or the declarations form a cycle), boundary volumes of frozen and rigid
+  // particles (Akinci et al. 2012), every body system's prepare, then every solver's prepare.
   void prepare();
 
   // The next step size: the fixed dt, or the minimum over solvers clamped to [dt_min, dt_max].
@@ -88,6 +96,7 @@ class World {
     Real radius;
     NeighbourList list;
   };
+  void order_solvers();
   void update_neighbours();
   void check_stability() const;
 
@@ -99,6 +108,8 @@ class World {
   NeighbourGrid grid_;
   std::vector<ListRequest> lists_;
   std::vector<std::unique_ptr<Solver>> solvers_;
+  std::vector<CouplingUse> solver_uses_;  // parallel to solvers_
+  CouplingArrays coupling_;
   std::vector<std::unique_ptr<BodySystem>> bodies_;
   std::vector<ContainerBox> containers_;
   double time_ = 0;

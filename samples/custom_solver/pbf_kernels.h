@@ -45,7 +45,8 @@ struct PbfPairTerms {
   Real* density = nullptr;            // per particle: rho_i
 };
 
-// lambda_i (eq. 11) at the predicted positions `xs`; fills i's entries of `terms`.
+// lambda_i (eq. 11) at the predicted positions `xs` (boundary particles' included: a moving
+// body is seen where it will be); fills i's entries of `terms`.
 UPF_HD inline Real pbf_lambda(const FluidView& f, const Vec3* xs, const PbfConstants& c,
                               const PbfPairTerms& terms, std::uint32_t i) {
   const Vec3 xi = xs[i];
@@ -69,7 +70,7 @@ UPF_HD inline Real pbf_lambda(const FluidView& f, const Vec3* xs, const PbfConst
   for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
     const std::uint32_t b = f.boundary.indices[k];
     Vec3 g;
-    rho += rho0 * f.boundary_volume[b] * f.kernel.value_and_gradient(xi - f.x[b], g);
+    rho += rho0 * f.boundary_volume[b] * f.kernel.value_and_gradient(xi - xs[b], g);
     grad_boundary += g * f.boundary_volume[b];
   }
   terms.boundary_gradient[i] = grad_boundary;

@@ -65,21 +65,16 @@ double PbfSolver::template_denominator(Real spacing, const CubicSplineKernel& ke
 }
 
 void PbfSolver::prepare(World& world) {
+  fluid_.prepare(world, materials_);
   Particles& p = world.particles();
-  p.scalar_field("density", 0, true);
-  p.scalar_field("pressure", 0, true);
   p.scalar_field("pbf.lambda", 0, true);
   p.scalar_field("pbf.predicted_density");
   p.vector_field("pbf.predicted_position");
   p.vector_field("pbf.position_correction");
+  p.vector_field("pbf.displacement");
   p.vector_field("pbf.boundary_gradient");
   p.vector_field("pbf.velocity");
   p.vector_field("pbf.vorticity");
-  lists_.request(world);
-  table_.load(world);
-  owned_.set_materials(world.materials().size(), materials_);
-  max_viscosity_ = 0;
-  for (MaterialId m : materials_) max_viscosity_ = std::max(max_viscosity_, table_.viscosity[m]);
   reference_speed_ = free_fall_speed(world);
 
   // The paper's epsilon and k, which assume unit masses, in SI units for this spacing.
@@ -94,34 +89,59 @@ void PbfSolver::prepare(World& world) {
 }
 
 Real PbfSolver::max_time_step(const World& world) const {
-  return fluid_cfl_time_step(world, max_viscosity_, reference_speed_);
+  return fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
 }
 
 template <class Body>
 void PbfSolver::for_mine(const World& world, Body&& body) const {
-  owned_.for_each(world.executor(), body);
+  fluid_.owned.for_each(world.executor(), body);
 }
 
 void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
   Particles& p = world.particles();
   Real* density = p.scalar_field("density").data();
-  Vec3* boundary_gradient = p.vector_field("pbf.boundary_gradient").data();
   Vec3* xs = p.vector_field("pbf.predicted_position").data();
   const Vec3* x = p.position.data();
-  fluid_gradient_.resize(world.neighbours(lists_.fluid).total());
-  Vec3* fluid_gradient = fluid_gradient_.data();
-  const Vec3 g = world.settings().gravity;
+  Vec3* disp = p.vector_field("pbf.displacement").data();
+  const Vec3* a_other = fluid_.other_acceleration.data();
+  const OwnedParticles& owned = fluid_.owned;
 
-  // Liquid neighbours moved by another solver keep their positions in x*.
-  world.executor().for_each(p.size(), [&](std::size_t i) { xs[i] = x[i]; });
   // The density at x is what frames show as "density" (as for the other fluid solvers); the
-  // gradients there feed the shared viscosity.
-  for_mine(world, [&](std::uint32_t i) {
-    density[i] = density_and_gradients(f, fluid_gradient, boundary_gradient[i], i);
+  // shared forces: gravity, viscosity and the force of other materials (grains).
+  fluid_.shared_forces(world, f, density);
+  // Particles this solver does not move are predicted once at their current velocity (bodies
+  // move on, walls stay put), the owned ones under the shared forces.
+  world.executor().for_each(p.size(), [&](std::size_t i) {
+    if (f.type[i] != ParticleType::Liquid || !owned.owns(f.material[i]))
+      xs[i] = x[i] + f.v[i] * dt;
   });
   for_mine(world, [&](std::uint32_t i) {
-    const Vec3 v = f.v[i] + (g + viscosity_acceleration(f, density, fluid_gradient, i)) * dt;
-    xs[i] = x[i] + v * dt;
+    const Vec3 v = f.v[i] + a_other[i] * dt;
+    disp[i] = v * dt;
+    xs[i] = x[i] + disp[i];
+  });
+  // The shared viscosity's reaction on bodies (no pressure term: the corrections add theirs).
+  fluid_.add_reactions(world, f, density, [](std::uint32_t) { return Real(0); });
+}
+
+void PbfSolver::add_correction_reactions(World& world, const FluidView& f, const Vec3* xs,
+                                         const Real* lambda, Real dt) const {
+  if (fluid_.reaction_list < 0) return;
+  const NeighbourView fluid_of_body = view_of(world.neighbours(fluid_.reaction_list));
+  Vec3* force = world.coupling()[CouplingArray::BoundaryForce].data();
+  const OwnedParticles& owned = fluid_.owned;
+  const Real inv_dt2 = Real(1) / (dt * dt);
+  world.executor().for_each(world.particles().size(), [&](std::size_t b) {
+    const std::uint32_t begin = fluid_of_body.offsets[b];
+    const std::uint32_t end = fluid_of_body.offsets[b + 1];
+    if (begin == end) return;
+    Vec3 sum{};
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t i = fluid_of_body.indices[k];
+      if (!owned.owns(f.material[i])) continue;
+      sum -= f.kernel.gradient(xs[i] - xs[b]) * (f.mass[i] * lambda[i]);
+    }
+    force[b] += sum * (f.boundary_volume[b] * inv_dt2);
   });
 }
 
@@ -132,7 +152,8 @@ void PbfSolver::solve_constraints(World& world, const FluidView& f, Real dt) {
   Real* rho = p.scalar_field("pbf.predicted_density").data();
   Vec3* xs = p.vector_field("pbf.predicted_position").data();
   Vec3* dx = p.vector_field("pbf.position_correction").data();
-  const std::size_t slots = world.neighbours(lists_.fluid).total();
+  Vec3* disp = p.vector_field("pbf.displacement").data();
+  const std::size_t slots = world.neighbours(fluid_.lists.fluid).total();
   pair_gradient_.resize(slots);
   pair_tensile_.resize(slots);
   const PbfPairTerms terms{pair_gradient_.data(), pair_tensile_.data(),
@@ -147,15 +168,19 @@ void PbfSolver::solve_constraints(World& world, const FluidView& f, Real dt) {
       lambda[i] = pbf_lambda(f, xs, c, terms, i);
       pressure[i] -= f.rest_density[f.material[i]] * lambda[i] * inv_dt2;
     });
+    add_correction_reactions(world, f, xs, lambda, dt);
     for_mine(world, [&](std::uint32_t i) { dx[i] = pbf_position_correction(f, lambda, terms, i); });
-    for_mine(world, [&](std::uint32_t i) { xs[i] += dx[i]; });
+    for_mine(world, [&](std::uint32_t i) {
+      xs[i] += dx[i];
+      disp[i] += dx[i];
+    });
   }
 
   // The density error of the last iteration, defined as for every fluid solver
   // (solvers/fluid/compression_stats.h).
   stats_.iterations = iterations_;
-  stats_.avg_density_error = average_compression(world.executor(), owned_, f, rho);
-  stats_.max_density_error = max_compression(world.executor(), owned_, f, rho);
+  stats_.avg_density_error = average_compression(world.executor(), fluid_.owned, f, rho);
+  stats_.max_density_error = max_compression(world.executor(), fluid_.owned, f, rho);
 }
 
 void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
@@ -163,11 +188,12 @@ void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
   Vec3* x = p.position.data();
   Vec3* v = p.velocity.data();
   const Vec3* xs = p.vector_field("pbf.predicted_position").data();
+  const Vec3* disp = p.vector_field("pbf.displacement").data();
   Vec3* v_new = p.vector_field("pbf.velocity").data();
   Vec3* omega = p.vector_field("pbf.vorticity").data();
 
   for_mine(world, [&](std::uint32_t i) {
-    v[i] = (xs[i] - x[i]) / dt;
+    v[i] = disp[i] / dt;
     x[i] = xs[i];
   });
   // f views the particle arrays, so from here on it sees the new positions and velocities.
@@ -187,9 +213,7 @@ void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
 }
 
 void PbfSolver::step(World& world, Real dt) {
-  const Particles& p = world.particles();
-  const FluidView f = make_fluid_view(world, table_, lists_);
-  owned_.rebuild(p);
+  const FluidView f = fluid_.begin_step(world);
 
   Stopwatch watch;
   stats_ = SolverStats{};

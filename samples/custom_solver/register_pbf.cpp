@@ -1,6 +1,7 @@
 #include "register_pbf.h"
 
 #include "framework/solver/registry.h"
+#include "solvers/fluid/fluid_solver_state.h"
 #include "pbf_solver.h"
 
 namespace upf::pbf {
@@ -17,6 +18,7 @@ void register_pbf(Registry& registry) {
       [](const ParamValues& values, std::vector<MaterialId> materials) {
         return std::make_unique<PbfSolver>(values, std::move(materials));
       },
+      fluid_solver_coupling(),
   });
 }
 

@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "framework/core/stopwatch.h"
-#include "framework/world/coupling_fields.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -59,7 +58,7 @@ void DemSolver::prepare(World& world) {
   const Real list_radius = reach + skin_;
   grains_list_ =
       world.request_neighbours(kGranularMask, kGranularMask | kBoundaryMask, list_radius);
-  if (p.find_vector(kBoundaryForceField) && p.count(ParticleType::Rigid) > 0)
+  if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)
     reaction_list_ =
         world.request_neighbours(mask_of(ParticleType::Rigid), kGranularMask, list_radius);
   if (p.count(ParticleType::Liquid) > 0) {
@@ -67,7 +66,6 @@ void DemSolver::prepare(World& world) {
     // The voidage is an SPH sum over the whole kernel support, farther than contacts reach.
     grain_voidage_list_ = world.request_neighbours(kGranularMask, kGranularMask);
     liquid_grain_list_ = world.request_neighbours(kLiquidMask, kGranularMask);
-    p.vector_field(kLiquidCouplingForceField);
     const MaterialTable& mats = world.materials();
     liquid_density_.assign(mats.size(), 0);
     liquid_viscosity_.assign(mats.size(), 0);
@@ -130,7 +128,7 @@ void DemSolver::step(World& world, Real dt) {
     kick_drift(world, Real(0.5) * h_, 0);
     integrate_ms += watch.lap_ms();
   }
-  if (liquid) liquid_reactions(world);
+  if (liquid && world.coupling().active(CouplingArray::LiquidForce)) liquid_reactions(world);
   stats_.iterations = n;
   stats_.stage_ms = {{"dem_contacts", contacts_ms}, {"dem_integration", integrate_ms}};
 }
@@ -201,7 +199,7 @@ void DemSolver::liquid_reactions(World& world) {
   const Real* m = p.mass.data();
   const ParticleType* type = p.type.data();
   const MaterialId* mat = p.material.data();
-  Vec3* out = p.find_vector(kLiquidCouplingForceField)->data();
+  Vec3* out = world.coupling()[CouplingArray::LiquidForce].data();
   // Each grain's force is shared among its liquid neighbours by their Shepard weights, which
   // sum to one: the liquid gets exactly the opposite of what the grains got.
   world.executor().for_each(p.size(), [&](std::size_t j) {
@@ -330,7 +328,7 @@ void DemSolver::gather_pairs(World& world) {
 }
 
 void DemSolver::substep_reactions(World& world, Real weight) {
-  Vec3* reaction = world.particles().find_vector(kBoundaryForceField)->data();
+  Vec3* reaction = world.coupling()[CouplingArray::BoundaryForce].data();
   const std::uint32_t* rigid = rigid_.data();
   world.executor().for_each(rigid_.size(), [&](std::size_t r) {
     const std::uint32_t b = rigid[r];

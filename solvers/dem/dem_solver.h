@@ -11,7 +11,7 @@
 //
 // Grains in a liquid feel drag (Di Felice 1994) and buoyancy (dem_fluid_drag.h) from the liquid
 // interpolated around them at the step's start; the liquid neighbours gather the opposite force,
-// averaged over the sub-steps, through kLiquidCouplingForceField, so momentum is conserved.
+// averaged over the sub-steps, through the coupling array CouplingArray::LiquidForce, so momentum is conserved.
 //
 // Determinism: each pair of grains is computed once, by the grain with the lower id, which holds
 // the pair and its spring (dem_contact_list.h); in a second pass the other grain gathers the

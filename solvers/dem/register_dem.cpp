@@ -18,6 +18,8 @@ void register_dem(Registry& registry) {
       [](const ParamValues& values, std::vector<MaterialId> materials) {
         return std::make_unique<DemSolver>(DemModel::Linear, values, std::move(materials));
       },
+      // Reactions on bodies and the drag and buoyancy's reaction on the liquid.
+      {{CouplingArray::BoundaryForce, CouplingArray::LiquidForce}, {}, {}},
   });
   registry.add_solver({
       "dem_hertz",
@@ -30,6 +32,8 @@ void register_dem(Registry& registry) {
       [](const ParamValues& values, std::vector<MaterialId> materials) {
         return std::make_unique<DemSolver>(DemModel::Hertz, values, std::move(materials));
       },
+      // Reactions on bodies and the drag and buoyancy's reaction on the liquid.
+      {{CouplingArray::BoundaryForce, CouplingArray::LiquidForce}, {}, {}},
   });
   registry.add_scene_section(granular_blocks_scene_section());
 }

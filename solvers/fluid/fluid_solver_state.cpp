@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "framework/world/coupling_fields.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_forces.h"
 
@@ -14,7 +13,7 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   p.scalar_field("pressure", 0, true);
   lists.request(world);
   // Reactions are gathered from the rigid side: for each rigid particle, its liquid neighbours.
-  if (p.find_vector(kBoundaryForceField) && p.count(ParticleType::Rigid) > 0)
+  if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)
     reaction_list = world.request_neighbours(mask_of(ParticleType::Rigid), kLiquidMask);
   table.load(world);
   owned.set_materials(world.materials().size(), materials);
@@ -44,9 +43,8 @@ void FluidSolverState::shared_forces(const World& world, const FluidView& f, Rea
   owned.for_each(exec, [&](std::uint32_t i) {
     a_other[i] = g + viscosity_acceleration(f, density, gradient, i);
   });
-  if (const std::vector<Vec3>* coupling =
-          world.particles().find_vector(kLiquidCouplingForceField)) {
-    const Vec3* force = coupling->data();
+  if (world.coupling().active(CouplingArray::LiquidForce)) {
+    const Vec3* force = world.coupling()[CouplingArray::LiquidForce].data();
     owned.for_each(exec, [&](std::uint32_t i) { a_other[i] += force[i] / f.mass[i]; });
   }
 }

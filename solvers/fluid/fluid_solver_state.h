@@ -2,7 +2,8 @@
 // fluid solvers isolates the pressure solver (DESIGN.md, "Solvers"):
 //   begin_step       the owned index list and the view of the current state;
 //   shared_forces    "non_pressure": density and kernel gradients at the current positions, then
-//                    a_other = g + viscosity (fluid_forces.h);
+//                    a_other = g + viscosity (fluid_forces.h) + the force of other materials
+//                    (CouplingArray::LiquidForce: grains' drag and buoyancy reactions) / m;
 //   add_reactions    the reactions on rigid boundary particles (boundary_reactions.h), at the
 //                    positions and velocities the forces used, so before integrate;
 //   integrate        symplectic Euler, v += (a_other + a_pressure) dt, then x += v dt.
@@ -17,6 +18,12 @@
 #include "solvers/fluid/owned_particles.h"
 
 namespace upf {
+
+// What every fluid solver declares in its registration (SolverInfo::coupling): it writes its
+// reactions on bodies and applies the forces of other materials (grains) when those exist.
+inline CouplingUse fluid_solver_coupling() {
+  return {{CouplingArray::BoundaryForce}, {}, {CouplingArray::LiquidForce}};
+}
 
 struct FluidSolverState {
   FluidMaterialTable table;
@@ -38,14 +45,14 @@ struct FluidSolverState {
   FluidView begin_step(const World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
   void shared_forces(const World& world, const FluidView& f, Real* density);
-  // Adds the reactions of the owned particles' boundary forces to kBoundaryForceField, when the
-  // world has rigid particles. `pressure_factor(i)` is P_i of boundary_reactions.h;
+  // Adds the reactions of the owned particles' boundary forces to the world's coupling array
+  // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor(i)` is P_i of boundary_reactions.h;
   // `pressure_gradient(r)` the gradient of the solver's pressure term.
   template <class PressureFactor, class PressureGradient>
   void add_reactions(World& world, const FluidView& f, const Real* density,
                      PressureFactor&& pressure_factor, PressureGradient&& pressure_gradient) const {
     if (reaction_list < 0) return;
-    std::vector<Vec3>* force = world.particles().find_vector(kBoundaryForceField);
+    std::vector<Vec3>* force = &world.coupling()[CouplingArray::BoundaryForce];
     add_boundary_reactions(
         world.executor(), f, view_of(world.neighbours(reaction_list)), density,
         [&](MaterialId m) { return owned.owns(m); }, pressure_factor, pressure_gradient,

@@ -1,6 +1,7 @@
 #include "solvers/pcisph/register_pcisph.h"
 
 #include "framework/solver/registry.h"
+#include "solvers/fluid/fluid_solver_state.h"
 #include "solvers/pcisph/pcisph_solver.h"
 
 namespace upf {
@@ -16,6 +17,7 @@ void register_pcisph(Registry& registry) {
       [](const ParamValues& values, std::vector<MaterialId> materials) {
         return std::make_unique<PcisphSolver>(values, std::move(materials));
       },
+      fluid_solver_coupling(),
   });
 }
 

@@ -1,6 +1,7 @@
 #include "solvers/sph/register_sph.h"
 
 #include "framework/solver/registry.h"
+#include "solvers/fluid/fluid_solver_state.h"
 #include "solvers/sph/sph_solver.h"
 
 namespace upf {
@@ -17,6 +18,7 @@ void register_sph(Registry& registry) {
       [](const ParamValues& values, std::vector<MaterialId> materials) {
         return std::make_unique<SphSolver>(values, std::move(materials));
       },
+      fluid_solver_coupling(),
   });
 }
 

@@ -1,6 +1,7 @@
 #include "solvers/wcsph/register_wcsph.h"
 
 #include "framework/solver/registry.h"
+#include "solvers/fluid/fluid_solver_state.h"
 #include "solvers/wcsph/wcsph_solver.h"
 
 namespace upf {
@@ -16,6 +17,7 @@ void register_wcsph(Registry& registry) {
       [](const ParamValues& values, std::vector<MaterialId> materials) {
         return std::make_unique<WcsphSolver>(values, std::move(materials));
       },
+      fluid_solver_coupling(),
   });
 }
 

@@ -8,39 +8,15 @@
 #include <cstdio>
 #include <vector>
 
-#include "coupling/bodies/rigid_body_system.h"
+#include "coupling_scenes.h"
 #include "scene_helpers.h"
 
 namespace upf::testing {
 namespace {
 
-const std::string kAssets = std::string(UPF_SOURCE_DIR) + "/assets/meshes/";
-constexpr double kSpacing = 0.02;
-constexpr double kTank = 0.5;   // m, a cube tank
-constexpr double kWater = 0.3;  // m, the water's initial depth
-
-const RigidBodySystem& bodies_of(const World& world) {
-  return dynamic_cast<const RigidBodySystem&>(*world.body_systems().front());
-}
-
-nlohmann::json tank_with_body(double density, const std::string& mesh, double scale,
-                              const std::vector<double>& position) {
-  return {
-      {"particle_spacing", kSpacing},
-      {"materials",
-       {{"water", {{"type", "liquid"}, {"viscosity", 0.002}, {"solver", "pcisph"}}},
-        {"walls", {{"type", "frozen"}}},
-        {"solid", {{"type", "rigid"}, {"density", density}}}}},
-      {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {kTank, kTank, kTank}}}}},
-      {"fluid_blocks",
-       {{{"material", "water"}, {"min", {0, 0, 0}}, {"max", {kTank, kWater, kTank}}}}},
-      {"bodies",
-       {{{"name", "body"},
-         {"material", "solid"},
-         {"mesh", {{"file", kAssets + mesh}, {"scale", scale}, {"position", position}}}}}},
-      {"time", {{"dt_max", 0.002}}},
-  };
-}
+constexpr double kSpacing = 0.02;  // tank_with_body's
+constexpr double kTank = 0.5;      // m, its cube tank
+constexpr double kWater = 0.3;     // m, its water's initial depth
 
 // The free surface away from the body: the mean over a grid of columns farther than `clear`
 // from the body's centre of the highest liquid particle centre plus half a spacing.
@@ -70,7 +46,7 @@ double surface_height(const Particles& p, double cx, double cz, double clear) {
 TEST(Buoyancy, CubeOfHalfWaterDensityFloatsWithItsCentreOnTheWaterline) {
   constexpr double kSide = 0.16;
   // Lowered to just above the water: it falls in, bobs and settles.
-  TestWorld t(tank_with_body(500, "unit_box.obj", kSide, {0.25, kWater + 0.5 * kSide + 0.01, 0.25}),
+  TestWorld t(tank_with_body("pcisph", 500, "unit_box.obj", kSide, {0.25, kWater + 0.5 * kSide + 0.01, 0.25}),
               2);
   t.run_until(2.5);
   double offset = 0, speed = 0;
@@ -95,7 +71,7 @@ TEST(Buoyancy, CubeOfHalfWaterDensityFloatsWithItsCentreOnTheWaterline) {
 // on the floor (y = 0), where Bullet's contact with the container holds it.
 TEST(Buoyancy, SphereOfDensity1500SinksAndRestsOnTheFloor) {
   constexpr double kRadius = 0.06;  // the icosphere asset has radius 0.5
-  TestWorld t(tank_with_body(1500, "icosphere.ply", 2 * kRadius, {0.25, 0.2, 0.25}), 2);
+  TestWorld t(tank_with_body("pcisph", 1500, "icosphere.ply", 2 * kRadius, {0.25, 0.2, 0.25}), 2);
   t.run_until(1.5);
   const BodyState& s = bodies_of(*t.world).state(0);
   const double bottom = s.position.y() - kRadius;
@@ -107,35 +83,4 @@ TEST(Buoyancy, SphereOfDensity1500SinksAndRestsOnTheFloor) {
 }  // namespace
 }  // namespace upf::testing
 
-namespace upf::testing {
-namespace {
-
-// Every fluid solver pushes bodies (Akinci 2012, eq. 11 reactions from each solver's own
-// pressure term): a cube of density 500 placed half in the water (the water inside it carved
-// away) is held by a mean fluid force near its weight. Bound 25 %: the bobbing of a cube let
-// go at its waterline. A solver that adds no reactions lets it fall (force 0).
-TEST(Buoyancy, EveryFluidSolverHoldsUpAFloatingCube) {
-  constexpr double kSide = 0.16;
-  const double weight = 500 * kSide * kSide * kSide * 9.81;
-  for (const std::string solver : {"pcisph", "wcsph", "sph"}) {
-    SCOPED_TRACE(solver);
-    nlohmann::json doc = tank_with_body(500, "unit_box.obj", kSide, {0.25, kWater, 0.25});
-    doc["materials"]["water"]["solver"] = solver;
-    TestWorld t(doc, 2);
-    t.run_until(0.3);
-    double force = 0;
-    int n = 0;
-    while (t.world->time() < 0.6 - 1e-9) {
-      t.world->step(t.world->next_time_step_until(0.6));
-      force += bodies_of(*t.world).state(0).fluid_force.y();
-      ++n;
-    }
-    force /= n;
-    std::printf("%s: mean fluid force on the cube %.2f N, weight %.2f N\n", solver.c_str(), force,
-                weight);
-    EXPECT_NEAR(force, weight, 0.25 * weight);
-  }
-}
-
-}  // namespace
-}  // namespace upf::testing
+// Every fluid solver, plug-ins included, holding up a floating cube: test_every_fluid_solver.cpp.

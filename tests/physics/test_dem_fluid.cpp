@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "coupling_scenes.h"
 #include "scene_helpers.h"
 #include "solvers/dem/dem_fluid_drag.h"
 
@@ -13,39 +14,6 @@ namespace upf::testing {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-nlohmann::json grain_in_water(double grain_density, double radius, const std::vector<double>& g,
-                              const std::vector<double>& grain_velocity, bool floating = false) {
-  const double y = 0.3;
-  // Floating: a block of water away from every wall (walls push back: an external force).
-  const std::vector<double> water_min =
-      floating ? std::vector<double>{0.05, 0.2, 0.05} : std::vector<double>{0, 0, 0};
-  const std::vector<double> water_max =
-      floating ? std::vector<double>{0.25, 0.4, 0.25} : std::vector<double>{0.3, 0.46, 0.3};
-  return {{"gravity", g},
-          {"particle_spacing", 0.02},
-          {"materials",
-           {{"water",
-             {{"type", "liquid"},
-              // The shared Laplacian viscosity is not momentum-symmetric where densities
-              // differ (a floating block's surface), so the balance runs without it.
-              {"viscosity", floating ? 0.0 : 0.002},
-              {"drag_viscosity", 1e-3}}},
-            {"walls", {{"type", "frozen"}}},
-            {"bead",
-             {{"type", "granular"},
-              {"density", grain_density},
-              {"radius", radius},
-              {"normal_stiffness", 1e4}}}}},
-          {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {0.3, 0.5, 0.3}}}}},
-          {"fluid_blocks", {{{"material", "water"}, {"min", water_min}, {"max", water_max}}}},
-          {"granular_blocks",
-           {{{"material", "bead"},
-             {"min", {0.15 - radius, y - radius, 0.15 - radius}},
-             {"max", {0.15 + radius, y + radius, 0.15 + radius}},
-             {"velocity", grain_velocity}}}},
-          {"time", {{"dt_max", 0.002}}}};
-}
 
 std::size_t the_grain(const Particles& p) {
   for (std::size_t i = 0; i < p.size(); ++i)
@@ -79,7 +47,7 @@ TEST(DemFluid, BeadSettlesInWaterAtTheDiFeliceTerminalVelocity) {
   }
   const double terminal = 0.5 * (lo + hi);
 
-  TestWorld t(grain_in_water(rho_p, r, {0, -g, 0}, {0, 0, 0}), 2);
+  TestWorld t(grain_in_water("pcisph", rho_p, r, {0, -g, 0}, {0, 0, 0}, false), 2);
   t.run_until(0.4);
   double sum = 0;
   int n = 0;
@@ -100,16 +68,8 @@ TEST(DemFluid, BeadSettlesInWaterAtTheDiFeliceTerminalVelocity) {
 // takes up exactly the momentum the bead loses (the liquid gathers the opposite of every grain's
 // fluid force).
 TEST(DemFluid, BeadAndWaterConserveMomentumWithoutGravity) {
-  TestWorld t(grain_in_water(2500, 0.008, {0, 0, 0}, {0.3, 0, 0}, true), 2);
-  auto momentum = [&](ParticleType type) {
-    const Particles& p = t.world->particles();
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.type[i] == type)
-        sum += double(p.mass[i]) * Eigen::Vector3d(double(p.velocity[i].x), double(p.velocity[i].y),
-                                                   double(p.velocity[i].z));
-    return sum;
-  };
+  TestWorld t(grain_in_water("pcisph", 2500, 0.008, {0, 0, 0}, {0.3, 0, 0}, true), 2);
+  auto momentum = [&](ParticleType type) { return momentum_of(t.world->particles(), type); };
   const Eigen::Vector3d grain0 = momentum(ParticleType::Granular);
   const Eigen::Vector3d total0 = grain0 + momentum(ParticleType::Liquid);
   t.run_until(0.2);  // the bead stays inside the water block

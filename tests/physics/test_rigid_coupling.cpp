@@ -5,17 +5,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "coupling/bodies/rigid_body_system.h"
+#include "coupling_scenes.h"
 #include "scene_helpers.h"
 
 namespace upf::testing {
 namespace {
-
-const std::string kAssets = std::string(UPF_SOURCE_DIR) + "/assets/meshes/";
-
-const RigidBodySystem& bodies_of(const World& world) {
-  return dynamic_cast<const RigidBodySystem&>(*world.body_systems().front());
-}
 
 // Newton's third law: without gravity, in a closed tank, a cube pushed into a block of water
 // changes the water's momentum by exactly what it loses itself (Akinci's reactions, eq. 11, are
@@ -24,34 +18,9 @@ const RigidBodySystem& bodies_of(const World& world) {
 // alone drifts the momentum by 2 % of the exchange here. 1000 steps of 0.4 ms: 0.4 s, before
 // the splash reaches the tank's walls (at about 0.45 s), whose forces are external.
 TEST(RigidCoupling, FluidAndBodyMomentumIsConservedWithoutGravity) {
-  nlohmann::json doc = {
-      {"gravity", {0, 0, 0}},
-      {"particle_spacing", 0.02},
-      {"materials",
-       {{"water", {{"type", "liquid"}, {"viscosity", 0.0}, {"solver", "pcisph"}}},
-        {"walls", {{"type", "frozen"}}},
-        {"solid", {{"type", "rigid"}, {"density", 500}}}}},
-      {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {1.4, 0.6, 0.6}}}}},
-      {"fluid_blocks",
-       {{{"material", "water"}, {"min", {0.4, 0.16, 0.16}}, {"max", {0.7, 0.44, 0.44}}}}},
-      {"bodies",
-       {{{"name", "cube"},
-         {"material", "solid"},
-         {"mesh",
-          {{"file", kAssets + "unit_box.obj"}, {"scale", 0.12}, {"position", {0.28, 0.3, 0.3}}}},
-         {"velocity", {0.5, 0, 0}}}}},
-      {"time", {{"fixed_dt", 0.0004}}},
-  };
-  TestWorld t(doc, 2);
-  auto fluid_momentum = [&] {
-    const Particles& p = t.world->particles();
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.type[i] == ParticleType::Liquid)
-        sum += double(p.mass[i]) * Eigen::Vector3d(double(p.velocity[i].x), double(p.velocity[i].y),
-                                                   double(p.velocity[i].z));
-    return sum;
-  };
+  TestWorld t(cube_shot_into_water("pcisph"), 2);
+  auto fluid_momentum = [&] { return momentum_of(t.world->particles(), ParticleType::Liquid); };
+
   const Eigen::Vector3d body0 = bodies_of(*t.world).momentum();
   const Eigen::Vector3d total0 = body0 + fluid_momentum();
   double exchanged = 0, drift = 0;

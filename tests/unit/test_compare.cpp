@@ -56,7 +56,8 @@ SolverInfo runaway_info(const std::string& name, ParticleType type) {
           {{"acceleration", "m/s^2", 5000, 0, 1e9, "downward acceleration"}},
           [](const ParamValues& values, std::vector<MaterialId> materials) {
             return std::make_unique<RunawaySolver>(values, std::move(materials));
-          }};
+          },
+          {}};
 }
 
 class CompareLibrary : public ::testing::Test {
