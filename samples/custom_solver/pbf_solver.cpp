@@ -104,17 +104,12 @@ void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
   const Vec3* x = p.position.data();
   Vec3* disp = p.vector_field("pbf.displacement").data();
   const Vec3* a_other = fluid_.other_acceleration.data();
-  const OwnedParticles& owned = fluid_.owned;
 
   // The density at x is what frames show as "density" (as for the other fluid solvers); the
   // shared forces: gravity, viscosity and the force of other materials (grains).
   fluid_.shared_forces(world, f, density);
-  // Particles this solver does not move are predicted once at their current velocity (bodies
-  // move on, walls stay put), the owned ones under the shared forces.
-  world.executor().for_each(p.size(), [&](std::size_t i) {
-    if (f.type[i] != ParticleType::Liquid || !owned.owns(f.material[i]))
-      xs[i] = x[i] + f.v[i] * dt;
-  });
+  // Particles this solver does not move at their velocity, the owned ones under the forces.
+  fluid_.predict_unowned(world, f, xs, dt);
   for_mine(world, [&](std::uint32_t i) {
     const Vec3 v = f.v[i] + a_other[i] * dt;
     disp[i] = v * dt;

@@ -49,6 +49,14 @@ void FluidSolverState::shared_forces(const World& world, const FluidView& f, Rea
   }
 }
 
+void FluidSolverState::predict_unowned(const World& world, const FluidView& f, Vec3* x_star,
+                                       Real dt) const {
+  world.executor().for_each(world.particles().size(), [&](std::size_t i) {
+    if (f.type[i] != ParticleType::Liquid || !owned.owns(f.material[i]))
+      x_star[i] = f.x[i] + f.v[i] * dt;
+  });
+}
+
 void FluidSolverState::integrate(World& world, Real dt) const {
   Particles& p = world.particles();
   Vec3* v = p.velocity.data();

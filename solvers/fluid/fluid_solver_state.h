@@ -65,6 +65,10 @@ struct FluidSolverState {
     add_reactions(world, f, density, pressure_factor,
                   [&](const Vec3& r) { return f.kernel.gradient(r); });
   }
+  // x_star = x + v dt for every particle this solver does not move, before a solver evaluates
+  // anything at predicted positions: bodies move on, walls stay put, so an approaching body is
+  // not seen a step late.
+  void predict_unowned(const World& world, const FluidView& f, Vec3* x_star, Real dt) const;
   // Symplectic Euler over the owned particles with other_acceleration + pressure_acceleration.
   void integrate(World& world, Real dt) const;
 };

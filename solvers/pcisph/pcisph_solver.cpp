@@ -86,10 +86,7 @@ void PcisphSolver::step(World& world, Real dt) {
 
   // Predict-correct loop. Particles this solver does not move (boundaries, bodies, other
   // fluids) are predicted once, moving on at their current velocity; static walls stay put.
-  exec.for_each(p.size(), [&](std::size_t i) {
-    if (f.type[i] != ParticleType::Liquid || !owned.owns(f.material[i]))
-      x_star[i] = f.x[i] + f.v[i] * dt;
-  });
+  fluid_.predict_unowned(world, f, x_star, dt);
   const double delta = delta_scale_ / (double(dt) * double(dt));
   double avg_error = 0;
   int iteration = 0;
