@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
       sub += rep.solver.iterations;
       grain_steps += double(grains) * rep.solver.iterations;
       stages["neighbours"] += rep.neighbour_ms;
-      for (const auto& [name, ms] : rep.solver.stage_ms) stages[name] += ms;
+      for (const auto& [name, ms] : rep.stage_ms) stages[name] += ms;
     }
     rates.push_back(grain_steps / (wall_ms / 1000.0));
     substeps.push_back(sub / steps);

@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
       wall_ms += rep.total_ms;
       iters += rep.solver.iterations;
       stages["neighbours"] += rep.neighbour_ms;
-      for (const auto& [name, ms] : rep.solver.stage_ms) stages[name] += ms;
+      for (const auto& [name, ms] : rep.stage_ms) stages[name] += ms;
     }
     rates.push_back(double(liquid) * steps / (wall_ms / 1000.0));
     iterations.push_back(iters / steps);

@@ -31,7 +31,7 @@ const std::vector<SurfaceImpulse>& PenetrationGuard::apply(
   const BodyId* body = p.body.data();
   const Vec3* r0 = local->data();
   const Vec3* n0 = normal->data();
-  world.executor().for_each(p.size(), [&](std::size_t i) {
+  world.executor().for_each_index(p.size(), [&](std::size_t i) {
     if (type[i] != ParticleType::Liquid) return;
     const Eigen::Vector3d xi = to_eigen(x[i]);
     // The nearest outer-layer sample of a guarded body, where the bodies stand at the step's end

@@ -191,7 +191,7 @@ void RigidBodySystem::place_particles(World& world, double dt) {
   Vec3* x = p.position.data();
   Vec3* v = p.velocity.data();
   const BodyId* body = p.body.data();
-  world.executor().for_each(p.size(), [&](std::size_t i) {
+  world.executor().for_each_index(p.size(), [&](std::size_t i) {
     const BodyId b = body[i];
     if (b == kNoBody || !moves[std::size_t(b)]) return;
     const BodyFrame& f = frames[std::size_t(b)];

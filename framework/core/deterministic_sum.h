@@ -15,18 +15,11 @@
 
 namespace upf {
 
-// Sum of value(i) for i in [0, n), exact in fixed point with `fraction_bits` bits after the
-// binary point. Values must satisfy |value| * 2^fraction_bits * n < 2^63.
+// Sum of value(i) for i in [0, n), exact in fixed point (CpuExecutor::fixed_point_sum).
 template <class Value>
-double fixed_point_sum(const CpuExecutor& exec, std::size_t n, Value&& value,
+double fixed_point_sum(const CpuExecutor& exec, std::size_t n, const Value& value,
                        int fraction_bits = 32) {
-  const double scale = std::ldexp(1.0, fraction_bits);
-  const std::int64_t count = static_cast<std::int64_t>(n);
-  std::int64_t total = 0;
-#pragma omp parallel for schedule(static) reduction(+ : total) num_threads(exec.threads())
-  for (std::int64_t i = 0; i < count; ++i)
-    total += static_cast<std::int64_t>(std::nearbyint(double(value(std::size_t(i))) * scale));
-  return double(total) / scale;
+  return exec.fixed_point_sum(all_particles(n), value, fraction_bits);
 }
 
 // A running sum of doubles in 64-bit fixed point with 32 bits after the binary point (resolution
@@ -59,7 +52,7 @@ double block_sum(const CpuExecutor& exec, std::size_t n, Value&& value) {
   constexpr std::size_t kBlock = 4096;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<double> partial(blocks, 0.0);
-  exec.for_each(blocks, [&](std::size_t b) {
+  exec.for_each_index(blocks, [&](std::size_t b) {
     double s = 0;
     const std::size_t end = std::min(n, (b + 1) * kBlock);
     for (std::size_t i = b * kBlock; i < end; ++i) s += double(value(i));

@@ -55,7 +55,7 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
   origin_ = n ? Vec3{lx - cell_size_, ly - cell_size_, lz - cell_size_} : Vec3{};
 
   keys_.resize(n);
-  exec.for_each(n, [&](std::size_t i) { keys_[i] = key_of(x[i]); });
+  exec.for_each_index(n, [&](std::size_t i) { keys_[i] = key_of(x[i]); });
 
   // Start from id order, then a stable sort by key gives (key, id) order.
   const ParticleId id_bound = particles.id_bound();
@@ -103,7 +103,7 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
   }
   sorted_x_.resize(n);
   sorted_type_.resize(n);
-  exec.for_each(n, [&](std::size_t s) {
+  exec.for_each_index(n, [&](std::size_t s) {
     sorted_x_[s] = x[sorted_[s]];
     sorted_type_[s] = particles.type[sorted_[s]];
   });

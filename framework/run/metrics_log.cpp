@@ -1,6 +1,7 @@
 #include "framework/run/metrics_log.h"
 
 #include <cmath>
+#include <utility>
 
 #include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
@@ -40,24 +41,33 @@ void restore_length(StateReader& in, std::ofstream& log, const std::filesystem::
 }
 }  // namespace
 
+namespace {
+struct KineticEnergyValue {
+  const Real* mass;
+  const Vec3* velocity;
+  double operator()(std::size_t i) const {
+    return 0.5 * double(mass[i]) * double(squared_norm(velocity[i]));
+  }
+};
+}  // namespace
+
 double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
-  return block_sum(exec, particles.size(), [&](std::size_t i) {
-    return 0.5 * double(particles.mass[i]) * double(squared_norm(particles.velocity[i]));
-  });
+  return block_sum(exec, particles.size(),
+                   KineticEnergyValue{particles.mass.data(), particles.velocity.data()});
 }
 
-MetricsLog::MetricsLog(const std::filesystem::path& path, bool resuming) : path_(path) {
-  if (!resuming) out_ = open_log(path);
+MetricsLog::MetricsLog(const std::filesystem::path& path, std::vector<std::string> stages,
+                       bool resuming)
+    : path_(path), stages_(std::move(stages)) {
+  if (resuming) return;
+  out_ = open_log(path);
+  out_ << "step,t,dt,iterations,avg_density_error,max_density_error,kinetic_energy,"
+          "n_liquid,n_rigid,n_granular,n_frozen,neighbour_ms";
+  for (const auto& s : stages_) out_ << ',' << s << "_ms";
+  out_ << ",wall_ms\n";
 }
 
 void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
-  if (stages_.empty()) {  // the header follows the stages the solvers reported on step 1
-    for (const auto& [name, ms] : r.solver.stage_ms) stages_.push_back(name);
-    out_ << "step,t,dt,iterations,avg_density_error,max_density_error,kinetic_energy,"
-            "n_liquid,n_rigid,n_granular,n_frozen,neighbour_ms";
-    for (const auto& s : stages_) out_ << ',' << s << "_ms";
-    out_ << ",wall_ms\n";
-  }
   out_ << m.step << ',' << m.time << ',' << r.dt << ',' << r.solver.iterations << ','
        << r.solver.avg_density_error << ',' << r.solver.max_density_error << ','
        << m.kinetic_energy;
@@ -65,7 +75,7 @@ void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
   out_ << ',' << r.neighbour_ms;
   for (const auto& s : stages_) {
     double ms = 0;
-    for (const auto& [name, v] : r.solver.stage_ms)
+    for (const auto& [name, v] : r.stage_ms)
       if (name == s) ms += v;
     out_ << ',' << ms;
   }
@@ -81,8 +91,9 @@ void MetricsLog::save_state(StateWriter& out) {
 void MetricsLog::restore_state(StateReader& in) {
   const auto n = in.get<std::uint64_t>();
   if (n > in.remaining()) in.fail("more metrics columns than the file can hold");
-  stages_.resize(std::size_t(n));
-  for (auto& s : stages_) s = in.get_string();
+  std::vector<std::string> saved(static_cast<std::size_t>(n));
+  for (auto& s : saved) s = in.get_string();
+  in.expect(saved == stages_, "the metrics columns (the solvers' stages)");
   restore_length(in, out_, path_);
 }
 

@@ -23,8 +23,10 @@ struct StepMetrics {
 // file had at the checkpoint: rows written after it are dropped and written again.
 class MetricsLog {
  public:
+  // `stages`: the world's stage list (World::stage_names()), one timing column each.
   // `resuming`: the file is left alone until restore_state opens it.
-  explicit MetricsLog(const std::filesystem::path& path, bool resuming = false);
+  MetricsLog(const std::filesystem::path& path, std::vector<std::string> stages,
+             bool resuming = false);
   void add(const StepMetrics& m, const StepReport& r);
   void flush();
   void save_state(StateWriter& out);
@@ -33,7 +35,7 @@ class MetricsLog {
  private:
   std::filesystem::path path_;
   std::ofstream out_;
-  std::vector<std::string> stages_;  // stage columns, fixed by the first step
+  std::vector<std::string> stages_;  // stage columns
 };
 
 class ProbeLog {

@@ -268,7 +268,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   }
   FrameWriter frames(options.out_dir, scene, std::move(fields), options.write_frames, *world,
                      options.surface_mesher);
-  MetricsLog metrics(options.out_dir / "metrics.csv", options.resume);
+  MetricsLog metrics(options.out_dir / "metrics.csv", world->stage_names(), options.resume);
   std::vector<std::string> probe_names;
   for (const auto& p : scene.probes) probe_names.push_back(p.name);
   ProbeLog probe_log(options.out_dir / "probes.csv", probe_names, options.resume);
@@ -366,7 +366,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
       metrics.add(m, r);
       totals.step_ms.push_back(r.total_ms);
       totals.add_stage("neighbours", r.neighbour_ms);
-      for (const auto& [name, ms] : r.solver.stage_ms) totals.add_stage(name, ms);
+      for (const auto& [name, ms] : r.stage_ms) totals.add_stage(name, ms);
       totals.sum_dt += dt;
       totals.sum_iterations += r.solver.iterations;
       totals.sum_avg_error += r.solver.avg_density_error;

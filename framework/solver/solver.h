@@ -5,10 +5,10 @@
 
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 #include "framework/core/real.h"
+#include "framework/solver/stage_runner.h"
 
 namespace upf {
 
@@ -21,7 +21,6 @@ struct SolverStats {
   int iterations = 0;            // pressure (or constraint) iterations of the last step
   double avg_density_error = 0;  // average relative compression (rho - rho0)/rho0, >= 0
   double max_density_error = 0;
-  std::vector<std::pair<std::string, double>> stage_ms;  // wall milliseconds by stage
 };
 
 class Solver {
@@ -32,7 +31,11 @@ class Solver {
   virtual void prepare(World& world) = 0;
   // The largest stable step for the current state (CFL, sound speed, contact time ...).
   virtual Real max_time_step(const World& world) const = 0;
-  virtual void step(World& world, Real dt) = 0;
+  // The names of the stages step() runs, in order (stage_runner.h): the metrics columns.
+  virtual std::vector<std::string> stages() const = 0;
+  // Advances the solver's particles by dt, each piece of work run through `run` under one of
+  // stages(); per-particle work goes to the executor as particle stages (particle_stage.h).
+  virtual void step(World& world, Real dt, StageRunner& run) = 0;
   virtual SolverStats stats() const = 0;
   // Checkpoints (World::save_state): what the solver keeps from one step to the next outside the
   // particle fields, which the world saves itself. Stateless solvers keep the defaults.

@@ -76,7 +76,11 @@ void World::prepare() {
   compute_boundary_volumes(particles_, kBoundaryMask, boundary, kernel(), executor_);
   for (auto& b : bodies_) b->prepare(*this);
 
-  for (auto& s : solvers_) s->prepare(*this);
+  stage_runners_.clear();
+  for (auto& s : solvers_) {
+    s->prepare(*this);
+    stage_runners_.emplace_back(s->stages());
+  }
   prepared_ = true;
   update_neighbours();
 }
@@ -139,37 +143,56 @@ void World::step(double dt) {
   report_.neighbour_ms = neighbours.elapsed_ms();
 
   coupling_.reset(particles_.size());
-  for (auto& s : solvers_) {
-    s->step(*this, Real(dt));
-    const SolverStats st = s->stats();
+  for (std::size_t k = 0; k < solvers_.size(); ++k) {
+    Solver& s = *solvers_[k];
+    StageRunner& stages = stage_runners_[k];
+    stages.clear();
+    s.step(*this, Real(dt), stages);
+    for (std::size_t j = 0; j < stages.names().size(); ++j)
+      report_.stage_ms.emplace_back(stages.names()[j], stages.ms()[j]);
+    const SolverStats st = s.stats();
     report_.solver.iterations = std::max(report_.solver.iterations, st.iterations);
     report_.solver.avg_density_error =
         std::max(report_.solver.avg_density_error, st.avg_density_error);
     report_.solver.max_density_error =
         std::max(report_.solver.max_density_error, st.max_density_error);
-    report_.solver.stage_ms.insert(report_.solver.stage_ms.end(), st.stage_ms.begin(),
-                                   st.stage_ms.end());
   }
   Stopwatch body_watch;
   for (auto& b : bodies_) b->advance(*this, dt);
-  if (!bodies_.empty()) report_.solver.stage_ms.emplace_back("bodies", body_watch.elapsed_ms());
+  if (!bodies_.empty()) report_.stage_ms.emplace_back("bodies", body_watch.elapsed_ms());
   time_ += dt;
   ++step_count_;
   report_.total_ms = total.elapsed_ms();
   check_stability();
 }
 
+std::vector<std::string> World::stage_names() const {
+  std::vector<std::string> names;
+  for (const StageRunner& r : stage_runners_)
+    names.insert(names.end(), r.names().begin(), r.names().end());
+  if (!bodies_.empty()) names.emplace_back("bodies");
+  return names;
+}
+
+namespace {
+// A particle whose state went bad: a position or velocity that is not finite, or a runaway speed.
+struct BrokenParticle {
+  const Vec3* x;
+  const Vec3* v;
+  double limit2;
+  bool operator()(std::uint32_t i) const {
+    return !is_finite(x[i]) || !is_finite(v[i]) || double(squared_norm(v[i])) > limit2;
+  }
+};
+}  // namespace
+
 void World::check_stability() const {
   // The first bad particle in id order, so the report is the same for any thread count.
   const std::size_t n = particles_.size();
-  const double limit2 = settings_.max_speed * settings_.max_speed;
-  std::size_t bad = n;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& v = particles_.velocity[i];
-    const bool broken =
-        !is_finite(particles_.position[i]) || !is_finite(v) || double(squared_norm(v)) > limit2;
-    if (broken && (bad == n || particles_.id[i] < particles_.id[bad])) bad = i;
-  }
+  const std::size_t bad = executor_.first_by_id(
+      n, particles_.id.data(),
+      BrokenParticle{particles_.position.data(), particles_.velocity.data(),
+                     settings_.max_speed * settings_.max_speed});
   if (bad == n) return;
   const Vec3& x = particles_.position[bad];
   const Vec3& v = particles_.velocity[bad];

@@ -4,13 +4,16 @@
 //   1 body systems place their particles (rigid particles follow their bodies)
 //   2 neighbour grid update and the neighbour lists solvers asked for; reorder every K steps
 //   3 the coupling arrays are zeroed, then each solver advances its own particles, in an order
-//     where every coupling array is written before it is read (coupling.h)
+//     where every coupling array is written before it is read (coupling.h), its stages run and
+//     timed by the world (stage_runner.h)
 //   4 body systems sum the reactions per body and step their bodies (body_system.h)
 //   5 time += dt; stability check (NaN, runaway speed)
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "framework/executors/cpu/cpu_executor.h"
@@ -31,7 +34,10 @@ struct StepReport {
   double dt = 0;
   double neighbour_ms = 0;
   double total_ms = 0;
-  SolverStats solver;  // merged over solvers: max iterations, max errors, stages concatenated
+  SolverStats solver;  // merged over solvers: max iterations, max errors
+  // Wall milliseconds by stage, in World::stage_names() order: every solver's declared stages,
+  // then "bodies" when there are body systems.
+  std::vector<std::pair<std::string, double>> stage_ms;
 };
 
 class World {
@@ -77,6 +83,8 @@ class World {
   double next_time_step_until(double end) const;
   // Advances by dt. Throws InstabilityError (with the last good state kept) when it blows up.
   void step(double dt);
+  // The stages of a step, once prepare() has run: the metrics columns (StepReport::stage_ms).
+  std::vector<std::string> stage_names() const;
 
   // Checkpoints: time, step count, particles, then each solver's and body system's own state.
   // restore_state runs after prepare() on a world built from the same scene; a checkpoint of
@@ -109,6 +117,7 @@ class World {
   std::vector<ListRequest> lists_;
   std::vector<std::unique_ptr<Solver>> solvers_;
   std::vector<CouplingUse> solver_uses_;  // parallel to solvers_
+  std::vector<StageRunner> stage_runners_;  // parallel to solvers_, made by prepare()
   CouplingArrays coupling_;
   std::vector<std::unique_ptr<BodySystem>> bodies_;
   std::vector<ContainerBox> containers_;

@@ -1,17 +1,24 @@
-// Compiles the PBF per-particle functions with nvcc: the same source the CPU runs must stay
-// device-clean until the CUDA executor launches it (DESIGN.md, "Executors").
-#include "pbf_kernels.h"
+// Compiles the PBF particle stages with nvcc: the same source the CPU runs must stay device-clean
+// until the device pipeline launches it (DESIGN.md, "Stages, executors and backends").
+#include "pbf_stages.h"
 
 namespace upf::pbf::cuda {
 
-__global__ void pbf_compile_check(FluidView f, const Vec3* xs, Real* lambda, PbfPairTerms terms,
-                                  const Vec3* omega, PbfConstants c, Vec3* out, std::uint32_t n) {
-  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= n) return;
-  lambda[i] = pbf_lambda(f, xs, c, terms, i);
-  const PbfVelocityTerms t = pbf_velocity_terms(f, Real(0.01), i);
-  out[i] = pbf_position_correction(f, lambda, terms, i) + t.xsph + t.omega +
-           pbf_vorticity_acceleration(f, omega, Real(0.1), i);
+template <class Stage>
+__global__ void run_stage(Stage stage, ParticleRange range) {
+  const std::size_t k = std::size_t(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (k < range.size) stage(range[k]);
 }
+
+template __global__ void run_stage(PbfPredictStage, ParticleRange);
+template __global__ void run_stage(ZeroScalarStage, ParticleRange);
+template __global__ void run_stage(PbfLambdaStage, ParticleRange);
+template __global__ void run_stage(PbfCorrectionReactionStage, ParticleRange);
+template __global__ void run_stage(PbfCorrectionStage, ParticleRange);
+template __global__ void run_stage(PbfApplyCorrectionStage, ParticleRange);
+template __global__ void run_stage(PbfTakePredictionStage, ParticleRange);
+template __global__ void run_stage(PbfVelocityTermsStage, ParticleRange);
+template __global__ void run_stage(PbfVorticityStage, ParticleRange);
+template __global__ void run_stage(CopyVectorStage, ParticleRange);
 
 }  // namespace upf::pbf::cuda

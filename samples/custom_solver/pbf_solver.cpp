@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
+#include "pbf_stages.h"
 #include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_time_step.h"
@@ -92,56 +92,37 @@ Real PbfSolver::max_time_step(const World& world) const {
   return fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
 }
 
-template <class Body>
-void PbfSolver::for_mine(const World& world, Body&& body) const {
-  fluid_.owned.for_each(world.executor(), body);
-}
-
 void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
   Particles& p = world.particles();
   Real* density = p.scalar_field("density").data();
   Vec3* xs = p.vector_field("pbf.predicted_position").data();
-  const Vec3* x = p.position.data();
-  Vec3* disp = p.vector_field("pbf.displacement").data();
-  const Vec3* a_other = fluid_.other_acceleration.data();
 
   // The density at x is what frames show as "density" (as for the other fluid solvers); the
   // shared forces: gravity, viscosity and the force of other materials (grains).
   fluid_.shared_forces(world, f, density);
   // Particles this solver does not move at their velocity, the owned ones under the forces.
   fluid_.predict_unowned(world, f, xs, dt);
-  for_mine(world, [&](std::uint32_t i) {
-    const Vec3 v = f.v[i] + a_other[i] * dt;
-    disp[i] = v * dt;
-    xs[i] = x[i] + disp[i];
-  });
+  world.executor().run(fluid_.owned.range(),
+                       PbfPredictStage{f, fluid_.other_acceleration.data(), dt,
+                                       p.vector_field("pbf.displacement").data(), xs});
   // The shared viscosity's reaction on bodies (no pressure term: the corrections add theirs).
-  fluid_.add_reactions(world, f, density, [](std::uint32_t) { return Real(0); });
+  fluid_.add_reactions(world, f, density, NoPressureFactor{});
 }
 
 void PbfSolver::add_correction_reactions(World& world, const FluidView& f, const Vec3* xs,
                                          const Real* lambda, Real dt) const {
   if (fluid_.reaction_list < 0) return;
-  const NeighbourView fluid_of_body = view_of(world.neighbours(fluid_.reaction_list));
-  Vec3* force = world.coupling()[CouplingArray::BoundaryForce].data();
-  const OwnedParticles& owned = fluid_.owned;
-  const Real inv_dt2 = Real(1) / (dt * dt);
-  world.executor().for_each(world.particles().size(), [&](std::size_t b) {
-    const std::uint32_t begin = fluid_of_body.offsets[b];
-    const std::uint32_t end = fluid_of_body.offsets[b + 1];
-    if (begin == end) return;
-    Vec3 sum{};
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const std::uint32_t i = fluid_of_body.indices[k];
-      if (!owned.owns(f.material[i])) continue;
-      sum -= f.kernel.gradient(xs[i] - xs[b]) * (f.mass[i] * lambda[i]);
-    }
-    force[b] += sum * (f.boundary_volume[b] * inv_dt2);
-  });
+  world.executor().run(
+      all_particles(world.particles().size()),
+      PbfCorrectionReactionStage{f, view_of(world.neighbours(fluid_.reaction_list)),
+                                 fluid_.owned.materials(), xs, lambda, Real(1) / (dt * dt),
+                                 world.coupling()[CouplingArray::BoundaryForce].data()});
 }
 
 void PbfSolver::solve_constraints(World& world, const FluidView& f, Real dt) {
   Particles& p = world.particles();
+  const CpuExecutor& exec = world.executor();
+  const ParticleRange mine = fluid_.owned.range();
   Real* pressure = p.scalar_field("pressure").data();
   Real* lambda = p.scalar_field("pbf.lambda").data();
   Real* rho = p.scalar_field("pbf.predicted_density").data();
@@ -153,71 +134,58 @@ void PbfSolver::solve_constraints(World& world, const FluidView& f, Real dt) {
   pair_tensile_.resize(slots);
   const PbfPairTerms terms{pair_gradient_.data(), pair_tensile_.data(),
                            p.vector_field("pbf.boundary_gradient").data(), rho};
-  const PbfConstants c = constants_;
   const Real inv_dt2 = Real(1) / (dt * dt);
-  for_mine(world, [&](std::uint32_t i) { pressure[i] = 0; });
+  exec.run(mine, ZeroScalarStage{pressure});
 
   // Jacobi: every lambda from the same x*, every dx from the same lambdas, then all moves.
+  const PbfLambdaStage lambdas{f, xs, constants_, terms, inv_dt2, lambda, pressure};
+  const PbfCorrectionStage corrections{f, lambda, terms, dx};
+  const PbfApplyCorrectionStage moves{dx, xs, disp};
   for (int iteration = 0; iteration < iterations_; ++iteration) {
-    for_mine(world, [&](std::uint32_t i) {
-      lambda[i] = pbf_lambda(f, xs, c, terms, i);
-      pressure[i] -= f.rest_density[f.material[i]] * lambda[i] * inv_dt2;
-    });
+    exec.run(mine, lambdas);
     add_correction_reactions(world, f, xs, lambda, dt);
-    for_mine(world, [&](std::uint32_t i) { dx[i] = pbf_position_correction(f, lambda, terms, i); });
-    for_mine(world, [&](std::uint32_t i) {
-      xs[i] += dx[i];
-      disp[i] += dx[i];
-    });
+    exec.run(mine, corrections);
+    exec.run(mine, moves);
   }
 
   // The density error of the last iteration, defined as for every fluid solver
   // (solvers/fluid/compression_stats.h).
   stats_.iterations = iterations_;
-  stats_.avg_density_error = average_compression(world.executor(), fluid_.owned, f, rho);
-  stats_.max_density_error = max_compression(world.executor(), fluid_.owned, f, rho);
+  stats_.avg_density_error = average_compression(exec, fluid_.owned, f, rho);
+  stats_.max_density_error = max_compression(exec, fluid_.owned, f, rho);
 }
 
 void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
   Particles& p = world.particles();
-  Vec3* x = p.position.data();
+  const CpuExecutor& exec = world.executor();
+  const ParticleRange mine = fluid_.owned.range();
   Vec3* v = p.velocity.data();
-  const Vec3* xs = p.vector_field("pbf.predicted_position").data();
-  const Vec3* disp = p.vector_field("pbf.displacement").data();
   Vec3* v_new = p.vector_field("pbf.velocity").data();
   Vec3* omega = p.vector_field("pbf.vorticity").data();
 
-  for_mine(world, [&](std::uint32_t i) {
-    v[i] = disp[i] / dt;
-    x[i] = xs[i];
-  });
+  exec.run(mine, PbfTakePredictionStage{p.vector_field("pbf.predicted_position").data(),
+                                        p.vector_field("pbf.displacement").data(), dt,
+                                        p.position.data(), v});
   // f views the particle arrays, so from here on it sees the new positions and velocities.
   // XSPH and confinement read the neighbours' new velocities: results go to a scratch field
   // first so that no particle reads a velocity already smoothed this step.
-  const Real c = Real(xsph_), epsilon = Real(vorticity_);
-  for_mine(world, [&](std::uint32_t i) {
-    const PbfVelocityTerms t = pbf_velocity_terms(f, c, i);
-    v_new[i] = t.xsph;
-    omega[i] = t.omega;
-  });
-  if (epsilon > 0)
-    for_mine(world, [&](std::uint32_t i) {
-      v_new[i] += pbf_vorticity_acceleration(f, omega, epsilon, i) * dt;
-    });
-  for_mine(world, [&](std::uint32_t i) { v[i] = v_new[i]; });
+  exec.run(mine, PbfVelocityTermsStage{f, Real(xsph_), v_new, omega});
+  if (const Real epsilon = Real(vorticity_); epsilon > 0)
+    exec.run(mine, PbfVorticityStage{f, omega, epsilon, dt, v_new});
+  exec.run(mine, CopyVectorStage{v_new, v});
 }
 
-void PbfSolver::step(World& world, Real dt) {
-  const FluidView f = fluid_.begin_step(world);
+std::vector<std::string> PbfSolver::stages() const { return {"predict", "constraints", "velocity"}; }
 
-  Stopwatch watch;
+void PbfSolver::step(World& world, Real dt, StageRunner& run) {
+  FluidView f;
   stats_ = SolverStats{};
-  predict(world, f, dt);
-  stats_.stage_ms.emplace_back("predict", watch.lap_ms());
-  solve_constraints(world, f, dt);
-  stats_.stage_ms.emplace_back("constraints", watch.lap_ms());
-  update_velocities(world, f, dt);
-  stats_.stage_ms.emplace_back("velocity", watch.lap_ms());
+  run("predict", [&] {
+    f = fluid_.begin_step(world);
+    predict(world, f, dt);
+  });
+  run("constraints", [&] { solve_constraints(world, f, dt); });
+  run("velocity", [&] { update_velocities(world, f, dt); });
 }
 
 }  // namespace upf::pbf

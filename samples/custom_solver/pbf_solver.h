@@ -65,7 +65,8 @@ class PbfSolver final : public Solver {
   std::string_view name() const override { return "pbf"; }
   void prepare(World& world) override;
   Real max_time_step(const World& world) const override;
-  void step(World& world, Real dt) override;
+  std::vector<std::string> stages() const override;
+  void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
 
   static std::vector<ParamSpec> param_specs();
@@ -74,9 +75,6 @@ class PbfSolver final : public Solver {
   static double template_denominator(Real spacing, const CubicSplineKernel& kernel);
 
  private:
-  // Loops over the particles this solver moves (an index list, split evenly between threads).
-  template <class Body>
-  void for_mine(const World& world, Body&& body) const;
   void predict(World& world, const FluidView& f, Real dt);
   void solve_constraints(World& world, const FluidView& f, Real dt);
   void update_velocities(World& world, const FluidView& f, Real dt);

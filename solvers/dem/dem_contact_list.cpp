@@ -6,6 +6,13 @@ namespace upf {
 
 namespace {
 
+// Building the list is bookkeeping on the host, like building neighbour lists, not a particle
+// stage: it runs before the sub-steps, whose stages read the list through DemContactView.
+template <class Body>
+void for_each_owned(const CpuExecutor& exec, const OwnedParticles& owned, Body&& body) {
+  exec.for_each_index(owned.size(), [&](std::size_t k) { body(owned[k]); });
+}
+
 // Calls emit(partner, key) for each candidate of grain i: container faces first (container and
 // face order), then the neighbours it holds, in neighbour-list order.
 template <class Holds, class Emit>
@@ -55,7 +62,7 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned,
   const auto held = [&](std::uint32_t i, std::uint32_t j) { return holds(p, owned, i, j); };
 
   offsets_.assign(n + 1, 0);
-  owned.for_each(exec, [&](std::uint32_t i) {
+  for_each_owned(exec, owned, [&](std::uint32_t i) {
     std::uint32_t count = 0;
     for_each_candidate(p, sources, i, held, [&](std::uint32_t, std::uint32_t) { ++count; });
     offsets_[i + 1] = count;
@@ -69,7 +76,7 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned,
   partner_torque_.resize(total);
   partner_rolling_.resize(total);
   touching_.assign(total, 0);
-  owned.for_each(exec, [&](std::uint32_t i) {
+  for_each_owned(exec, owned, [&](std::uint32_t i) {
     std::uint32_t k = offsets_[i];
     for_each_candidate(p, sources, i, held, [&](std::uint32_t partner, std::uint32_t key) {
       partner_[k] = partner;
@@ -84,7 +91,7 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned,
 void DemContactList::carry_springs(const Particles& p, const OwnedParticles& owned,
                                    const CpuExecutor& exec) {
   // last_begin_by_id_ still describes last_key_ / last_xi_.
-  owned.for_each(exec, [&](std::uint32_t i) {
+  for_each_owned(exec, owned, [&](std::uint32_t i) {
     const ParticleId me = p.id[i];
     if (me >= last_count_by_id_.size() || last_count_by_id_[me] == 0) return;
     const std::uint32_t first = last_begin_by_id_[me], last = first + last_count_by_id_[me];
@@ -97,7 +104,7 @@ void DemContactList::carry_springs(const Particles& p, const OwnedParticles& own
   });
   last_begin_by_id_.assign(p.id_bound(), 0);
   last_count_by_id_.assign(p.id_bound(), 0);
-  owned.for_each(exec, [&](std::uint32_t i) {
+  for_each_owned(exec, owned, [&](std::uint32_t i) {
     last_begin_by_id_[p.id[i]] = offsets_[i];
     last_count_by_id_[p.id[i]] = offsets_[i + 1] - offsets_[i];
   });
@@ -125,14 +132,14 @@ void DemContactList::build_reverse(const Particles& p, const OwnedParticles& own
     }
   };
   reverse_offsets_.assign(n + 1, 0);
-  exec.for_each(n, [&](std::size_t j) {
+  exec.for_each_index(n, [&](std::size_t j) {
     std::uint32_t count = 0;
     for_each_reverse(j, [&](std::uint32_t) { ++count; });
     reverse_offsets_[j + 1] = count;
   });
   for (std::size_t j = 0; j < n; ++j) reverse_offsets_[j + 1] += reverse_offsets_[j];
   reverse_.resize(reverse_offsets_[n]);
-  exec.for_each(n, [&](std::size_t j) {
+  exec.for_each_index(n, [&](std::size_t j) {
     std::uint32_t r = reverse_offsets_[j];
     for_each_reverse(j, [&](std::uint32_t k) { reverse_[r++] = k; });
   });

@@ -24,12 +24,10 @@
 #include "framework/neighbours/neighbour_list.h"
 #include "framework/particles/particles.h"
 #include "framework/world/container_box.h"
+#include "solvers/dem/dem_views.h"
 #include "solvers/fluid/owned_particles.h"
 
 namespace upf {
-
-// Partner of a container-face candidate: this flag with container * 6 + face.
-inline constexpr std::uint32_t kDemWallPartner = 0x80000000u;
 
 // Wall faces have keys too: container c, face f (0..5) gets a key above every particle id.
 inline constexpr std::uint32_t dem_wall_key(std::size_t container, int face) {
@@ -87,6 +85,12 @@ class DemContactList {
   const Vec3& partner_rolling(std::uint32_t k) const { return partner_rolling_[k]; }
 
   std::size_t size() const { return partner_.size(); }
+  // The view the DEM's stages hold.
+  DemContactView view() {
+    return {offsets_.data(),        partner_.data(),         xi_.data(),
+            force_.data(),          partner_torque_.data(),  partner_rolling_.data(),
+            touching_.data(),       reverse_offsets_.data(), reverse_.data()};
+  }
 
   // Checkpoints: the springs and whose they are (the candidates are listed again next step).
   void save_state(StateWriter& out) const;

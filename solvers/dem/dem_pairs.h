@@ -14,6 +14,7 @@
 
 #include "framework/materials/material.h"
 #include "solvers/dem/dem_contact.h"
+#include "solvers/dem/dem_views.h"
 
 namespace upf {
 
@@ -34,6 +35,9 @@ class DemPairs {
   const DemPairParams& wall(MaterialId a) const { return walls_[a]; }
   const DemPairParams& boundary(MaterialId a) const { return boundary_[a]; }
   Real boundary_radius() const { return boundary_radius_; }
+  DemPairTable table() const {
+    return {pairs_.data(), walls_.data(), boundary_.data(), n_, boundary_radius_};
+  }
 
   // The shortest contact time over all pairs: the linear model's pi / (omega0 sqrt(1 - zeta^2)),
   // or for Hertz the Rayleigh time pi R sqrt(rho / G) / (0.1631 nu + 0.8766) of the

@@ -48,7 +48,8 @@ class DemSolver : public Solver {
   }
   void prepare(World& world) override;
   Real max_time_step(const World& world) const override;
-  void step(World& world, Real dt) override;
+  std::vector<std::string> stages() const override;
+  void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
   void save_state(StateWriter& out) const override;
   void restore_state(StateReader& in) override;

@@ -13,24 +13,30 @@
 // count. The pairs cancel exactly up to rounding, so fluid and bodies together conserve momentum.
 #pragma once
 
-#include "framework/executors/cpu/cpu_executor.h"
 #include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/owned_particles.h"
 
 namespace upf {
 
-// `fluid_of_boundary` lists, for each rigid particle b, its liquid neighbours; only those with
-// `owns(material)` count (the solver's own particles). `pressure_factor(i)` is P_i;
-// `pressure_gradient(r)` is the kernel gradient the solver's pressure term uses.
-template <class Owns, class PressureFactor, class PressureGradient>
-void add_boundary_reactions(const CpuExecutor& exec, const FluidView& f,
-                            const NeighbourView& fluid_of_boundary, const Real* density,
-                            Owns&& owns, PressureFactor&& pressure_factor,
-                            PressureGradient&& pressure_gradient, Vec3* force, std::size_t n) {
-  const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
-  exec.for_each(n, [&](std::size_t b) {
+// The reaction on rigid particle b, gathered over `fluid_of_boundary` (for each rigid particle,
+// its liquid neighbours); only those of an owned material count (the solver's own particles).
+// `pressure_factor(i)` is P_i (fluid_stages.h); `pressure_gradient(r)` is the kernel gradient the
+// solver's pressure term uses. Adds to force[b].
+template <class PressureFactor, class PressureGradient>
+struct BoundaryReactionStage {
+  FluidView f;
+  NeighbourView fluid_of_boundary;
+  const Real* density;
+  OwnedMaterials owns;
+  PressureFactor pressure_factor;
+  PressureGradient pressure_gradient;
+  Vec3* force;
+
+  UPF_HD void operator()(std::uint32_t b) const {
     const std::uint32_t begin = fluid_of_boundary.offsets[b];
     const std::uint32_t end = fluid_of_boundary.offsets[b + 1];
     if (begin == end) return;
+    const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
     const Vec3 xb = f.x[b];
     const Vec3 vb = f.v[b];
     const Real vol = f.boundary_volume[b];
@@ -51,7 +57,13 @@ void add_boundary_reactions(const CpuExecutor& exec, const FluidView& f,
       sum += pair * f.mass[i];
     }
     force[b] += sum;
-  });
-}
+  }
+};
+
+// The cubic spline gradient, which every solver's pressure term uses by default.
+struct CubicSplineGradient {
+  CubicSplineKernel kernel;
+  UPF_HD Vec3 operator()(const Vec3& r) const { return kernel.gradient(r); }
+};
 
 }  // namespace upf

@@ -1,6 +1,5 @@
 #include "solvers/fluid/equation_of_state_solver.h"
 
-#include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/compression_stats.h"
 
@@ -8,8 +7,7 @@ namespace upf {
 
 void EquationOfStateSolver::add_reactions(World& world, const FluidView& f, const Real* density,
                                           const Real* pressure) const {
-  fluid_.add_reactions(world, f, density,
-                       [&](std::uint32_t i) { return pressure[i] / (density[i] * density[i]); });
+  fluid_.add_reactions(world, f, density, PressureOverDensitySquared{pressure, density, Real(1)});
 }
 
 void EquationOfStateSolver::prepare(World& world) {
@@ -17,30 +15,38 @@ void EquationOfStateSolver::prepare(World& world) {
   prepare_method(world);
 }
 
-void EquationOfStateSolver::step(World& world, Real dt) {
+std::vector<std::string> EquationOfStateSolver::stages() const {
+  return {"non_pressure", "pressure", "integration"};
+}
+
+void EquationOfStateSolver::step(World& world, Real dt, StageRunner& run) {
   Particles& p = world.particles();
   const CpuExecutor& exec = world.executor();
-  const FluidView f = fluid_.begin_step(world);
-  Real* density = p.scalar_field("density").data();
-  Real* pressure = p.scalar_field("pressure").data();
-
-  Stopwatch watch;
+  FluidView f;
+  Real* density = nullptr;
+  Real* pressure = nullptr;
   stats_ = SolverStats{};
   stats_.iterations = 1;
 
-  fluid_.shared_forces(world, f, density);
-  add_own_non_pressure(world, f, density);
-  stats_.stage_ms.emplace_back("non_pressure", watch.lap_ms());
+  run("non_pressure", [&] {
+    f = fluid_.begin_step(world);
+    density = p.scalar_field("density").data();
+    pressure = p.scalar_field("pressure").data();
+    fluid_.shared_forces(world, f, density);
+    add_own_non_pressure(world, f, density);
+  });
 
-  compute_pressure(world, f, density, pressure);
-  stats_.avg_density_error = average_compression(exec, fluid_.owned, f, density);
-  stats_.max_density_error = max_compression(exec, fluid_.owned, f, density);
-  stats_.stage_ms.emplace_back("pressure", watch.lap_ms());
+  run("pressure", [&] {
+    compute_pressure(world, f, density, pressure);
+    stats_.avg_density_error = average_compression(exec, fluid_.owned, f, density);
+    stats_.max_density_error = max_compression(exec, fluid_.owned, f, density);
+  });
 
   // Reactions on rigid bodies from this step's pressures and densities (Akinci 2012, eq. 11).
-  add_reactions(world, f, density, pressure);
-  fluid_.integrate(world, dt);
-  stats_.stage_ms.emplace_back("integration", watch.lap_ms());
+  run("integration", [&] {
+    add_reactions(world, f, density, pressure);
+    fluid_.integrate(world, dt);
+  });
 }
 
 }  // namespace upf

@@ -21,7 +21,8 @@ class EquationOfStateSolver : public Solver {
       : materials_(std::move(materials)) {}
 
   void prepare(World& world) final;
-  void step(World& world, Real dt) final;
+  std::vector<std::string> stages() const final;
+  void step(World& world, Real dt, StageRunner& run) final;
   SolverStats stats() const final { return stats_; }
 
  protected:

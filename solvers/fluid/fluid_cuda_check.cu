@@ -1,6 +1,9 @@
-// Compiles the fluid solvers' per-particle functions with nvcc (DESIGN.md, "Executors"): the
-// same source the CPU executor runs must stay device-clean until the CUDA executor launches it.
-#include "solvers/fluid/fluid_forces.h"
+// Compiles the fluid solvers' particle stages with nvcc (DESIGN.md, "Stages, executors and
+// backends"): every stage the CPU executor runs is instantiated here in one kernel template, so
+// the same source stays device-clean until the device pipeline launches it.
+#include "solvers/dem/dem_stages.h"
+#include "solvers/fluid/boundary_reactions.h"
+#include "solvers/fluid/fluid_stages.h"
 #include "solvers/pcisph/pcisph_kernels.h"
 #include "solvers/sph/sph_kernel_sets.h"
 #include "solvers/sph/sph_kernels.h"
@@ -8,39 +11,50 @@
 
 namespace upf::cuda {
 
-__global__ void fluid_compile_check(FluidView f, const Real* density, const Real* pressure,
-                                    Vec3* gradients, Vec3* out, std::uint32_t n) {
-  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= n) return;
-  Vec3 boundary;
-  const Real rho = density_and_gradients(f, gradients, boundary, i);
-  out[i] = viscosity_acceleration(f, density, gradients, i) +
-           pcisph_pressure_acceleration(f, pressure, gradients, boundary, i);
-  out[i].x += fluid_density(f, f.x, i) + rho;
+template <class Stage>
+__global__ void run_stage(Stage stage, ParticleRange range) {
+  const std::size_t k = std::size_t(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (k < range.size) stage(range[k]);
 }
 
-template <class Kernels>
-__global__ void sph_compile_check(FluidView f, Kernels w, const Real* density, const Real* pressure,
-                                  Vec3* out, std::uint32_t n) {
-  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= n) return;
-  out[i] = sph_pressure_acceleration(f, w, density, pressure, i) +
-           sph_viscosity_acceleration(f, w, density, Real(1), i);
-  out[i].x += sph_density(f, w, Real(1), i) + sph_pressure(density[i], Real(1000), Real(1000));
+template <class Value>
+__global__ void evaluate(Value value, ParticleRange range, double* out) {
+  const std::size_t k = std::size_t(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (k < range.size) out[k] = double(value(range[k]));
 }
 
-template __global__ void sph_compile_check<MullerKernelSet>(FluidView, MullerKernelSet, const Real*,
-                                                            const Real*, Vec3*, std::uint32_t);
-template __global__ void sph_compile_check<CubicKernelSet>(FluidView, CubicKernelSet, const Real*,
-                                                           const Real*, Vec3*, std::uint32_t);
+template __global__ void run_stage(DensityAndGradientsStage, ParticleRange);
+template __global__ void run_stage(GravityAndViscosityStage, ParticleRange);
+template __global__ void run_stage(AddForceOverMassStage, ParticleRange);
+template __global__ void run_stage(PredictUnownedStage, ParticleRange);
+template __global__ void run_stage(SymplecticEulerStage, ParticleRange);
+template __global__ void run_stage(ClearPressureStage, ParticleRange);
+template __global__ void evaluate(CompressionValue, ParticleRange, double*);
+template __global__ void run_stage(
+    BoundaryReactionStage<PressureOverRestDensitySquared, CubicSplineGradient>, ParticleRange);
+template __global__ void run_stage(
+    BoundaryReactionStage<PressureOverDensitySquared, KernelSetPressureGradient<MullerKernelSet>>,
+    ParticleRange);
 
-__global__ void wcsph_compile_check(FluidView f, const Real* density, const Real* pressure,
-                                    const Vec3* gradients, Vec3* out, std::uint32_t n) {
-  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= n) return;
-  out[i] = wcsph_pressure_acceleration(f, density, pressure, gradients, out[i], i) +
-           artificial_viscosity_acceleration(f, density, gradients, Real(1), i);
-  out[i].x += tait_pressure(density[i], Real(1000), Real(1e5));
-}
+template __global__ void run_stage(PcisphPredictStage, ParticleRange);
+template __global__ void run_stage(PcisphCorrectPressureStage, ParticleRange);
+template __global__ void run_stage(PcisphPressureAccelerationStage, ParticleRange);
+
+template __global__ void run_stage(SphDensityStage<MullerKernelSet>, ParticleRange);
+template __global__ void run_stage(SphViscosityStage<MullerKernelSet>, ParticleRange);
+template __global__ void run_stage(SphPressureStage, ParticleRange);
+template __global__ void run_stage(SphPressureAccelerationStage<MullerKernelSet>, ParticleRange);
+template __global__ void run_stage(SphPressureAccelerationStage<CubicKernelSet>, ParticleRange);
+
+template __global__ void run_stage(TaitPressureStage, ParticleRange);
+template __global__ void run_stage(WcsphPressureAccelerationStage, ParticleRange);
+template __global__ void run_stage(ArtificialViscosityStage, ParticleRange);
+
+template __global__ void run_stage(DemForcesStage, ParticleRange);
+template __global__ void run_stage(DemGatherPairsStage, ParticleRange);
+template __global__ void run_stage(DemBoundaryReactionStage, ParticleRange);
+template __global__ void run_stage(DemKickDriftStage, ParticleRange);
+template __global__ void run_stage(DemFluidStateStage, ParticleRange);
+template __global__ void run_stage(DemLiquidReactionStage, ParticleRange);
 
 }  // namespace upf::cuda

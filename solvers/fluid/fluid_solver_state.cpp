@@ -33,40 +33,29 @@ FluidView FluidSolverState::begin_step(const World& world) {
 
 void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density) {
   const CpuExecutor& exec = world.executor();
-  const Vec3 g = world.settings().gravity;
-  Vec3* gradient = fluid_gradient.data();
-  Vec3* boundary = boundary_gradient.data();
-  Vec3* a_other = other_acceleration.data();
-  owned.for_each(exec, [&](std::uint32_t i) {
-    density[i] = density_and_gradients(f, gradient, boundary[i], i);
-  });
-  owned.for_each(exec, [&](std::uint32_t i) {
-    a_other[i] = g + viscosity_acceleration(f, density, gradient, i);
-  });
-  if (world.coupling().active(CouplingArray::LiquidForce)) {
-    const Vec3* force = world.coupling()[CouplingArray::LiquidForce].data();
-    owned.for_each(exec, [&](std::uint32_t i) { a_other[i] += force[i] / f.mass[i]; });
-  }
+  exec.run(owned.range(), DensityAndGradientsStage{f, fluid_gradient.data(),
+                                                   boundary_gradient.data(), density});
+  exec.run(owned.range(), GravityAndViscosityStage{f, density, fluid_gradient.data(),
+                                                   world.settings().gravity,
+                                                   other_acceleration.data()});
+  if (world.coupling().active(CouplingArray::LiquidForce))
+    exec.run(owned.range(),
+             AddForceOverMassStage{world.coupling()[CouplingArray::LiquidForce].data(), f.mass,
+                                   other_acceleration.data()});
 }
 
 void FluidSolverState::predict_unowned(const World& world, const FluidView& f, Vec3* x_star,
                                        Real dt) const {
-  world.executor().for_each(world.particles().size(), [&](std::size_t i) {
-    if (f.type[i] != ParticleType::Liquid || !owned.owns(f.material[i]))
-      x_star[i] = f.x[i] + f.v[i] * dt;
-  });
+  world.executor().run(all_particles(world.particles().size()),
+                       PredictUnownedStage{f, owned.materials(), dt, x_star});
 }
 
 void FluidSolverState::integrate(World& world, Real dt) const {
   Particles& p = world.particles();
-  Vec3* v = p.velocity.data();
-  Vec3* x = p.position.data();
-  const Vec3* a_other = other_acceleration.data();
-  const Vec3* a_p = pressure_acceleration.data();
-  owned.for_each(world.executor(), [&](std::uint32_t i) {
-    v[i] += (a_other[i] + a_p[i]) * dt;
-    x[i] += v[i] * dt;
-  });
+  world.executor().run(owned.range(),
+                       SymplecticEulerStage{other_acceleration.data(),
+                                            pressure_acceleration.data(), dt, p.velocity.data(),
+                                            p.position.data()});
 }
 
 }  // namespace upf

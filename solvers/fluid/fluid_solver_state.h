@@ -14,6 +14,7 @@
 
 #include "framework/world/world.h"
 #include "solvers/fluid/boundary_reactions.h"
+#include "solvers/fluid/fluid_stages.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
 
@@ -46,24 +47,24 @@ struct FluidSolverState {
   // Writes density (field `density`), the kernel gradients and other_acceleration.
   void shared_forces(const World& world, const FluidView& f, Real* density);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array
-  // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor(i)` is P_i of boundary_reactions.h;
-  // `pressure_gradient(r)` the gradient of the solver's pressure term.
-  template <class PressureFactor, class PressureGradient>
+  // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor` is P_i of
+  // boundary_reactions.h (a value struct, fluid_stages.h); `pressure_gradient` the gradient of the
+  // solver's pressure term.
+  template <class PressureFactor, class PressureGradient = CubicSplineGradient>
   void add_reactions(World& world, const FluidView& f, const Real* density,
-                     PressureFactor&& pressure_factor, PressureGradient&& pressure_gradient) const {
+                     const PressureFactor& pressure_factor,
+                     const PressureGradient& pressure_gradient) const {
     if (reaction_list < 0) return;
-    std::vector<Vec3>* force = &world.coupling()[CouplingArray::BoundaryForce];
-    add_boundary_reactions(
-        world.executor(), f, view_of(world.neighbours(reaction_list)), density,
-        [&](MaterialId m) { return owned.owns(m); }, pressure_factor, pressure_gradient,
-        force->data(), force->size());
+    std::vector<Vec3>& force = world.coupling()[CouplingArray::BoundaryForce];
+    world.executor().run(all_particles(force.size()),
+                         BoundaryReactionStage<PressureFactor, PressureGradient>{
+                             f, view_of(world.neighbours(reaction_list)), density,
+                             owned.materials(), pressure_factor, pressure_gradient, force.data()});
   }
-  // The same with the cubic spline gradient, which every solver's pressure term uses by default.
   template <class PressureFactor>
   void add_reactions(World& world, const FluidView& f, const Real* density,
-                     PressureFactor&& pressure_factor) const {
-    add_reactions(world, f, density, pressure_factor,
-                  [&](const Vec3& r) { return f.kernel.gradient(r); });
+                     const PressureFactor& pressure_factor) const {
+    add_reactions(world, f, density, pressure_factor, CubicSplineGradient{f.kernel});
   }
   // x_star = x + v dt for every particle this solver does not move, before a solver evaluates
   // anything at predicted positions: bodies move on, walls stay put, so an approaching body is

@@ -8,15 +8,20 @@
 
 namespace upf {
 
+namespace {
+// |v_i|^2 of a liquid particle, 0 for the others.
+struct LiquidSpeedSquared {
+  const Vec3* v;
+  const ParticleType* type;
+  Real operator()(std::uint32_t i) const {
+    return type[i] == ParticleType::Liquid ? squared_norm(v[i]) : Real(0);
+  }
+};
+}  // namespace
+
 Real max_liquid_speed_squared(const Particles& particles, const CpuExecutor& exec) {
-  const std::int64_t n = std::int64_t(particles.size());
-  const Vec3* v = particles.velocity.data();
-  const ParticleType* t = particles.type.data();
-  Real vmax2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : vmax2) num_threads(exec.threads())
-  for (std::int64_t i = 0; i < n; ++i)
-    if (t[i] == ParticleType::Liquid) vmax2 = std::max(vmax2, squared_norm(v[i]));
-  return vmax2;
+  return exec.max_of(all_particles(particles.size()),
+                     LiquidSpeedSquared{particles.velocity.data(), particles.type.data()});
 }
 
 Real free_fall_speed(const World& world) {

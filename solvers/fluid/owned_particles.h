@@ -8,10 +8,17 @@
 #include <cstdint>
 #include <vector>
 
-#include "framework/executors/cpu/cpu_executor.h"
+#include "framework/executors/particle_range.h"
 #include "framework/particles/particles.h"
 
 namespace upf {
+
+// A per-material "owned" flag array, by value in stages. C++17 and UPF_HD.
+struct OwnedMaterials {
+  const std::uint8_t* flags = nullptr;
+  std::size_t count = 0;
+  UPF_HD bool operator()(MaterialId m) const { return m < count && flags[m] != 0; }
+};
 
 class OwnedParticles {
  public:
@@ -25,12 +32,10 @@ class OwnedParticles {
   std::uint32_t operator[](std::size_t k) const { return indices_[k]; }
   bool owns(MaterialId m) const { return m < owns_.size() && owns_[m] != 0; }
 
-  // Runs body(i) for every owned particle index i, in parallel.
-  template <class Body>
-  void for_each(const CpuExecutor& exec, Body&& body) const {
-    const std::uint32_t* mine = indices_.data();
-    exec.for_each(indices_.size(), [&](std::size_t k) { body(mine[k]); });
-  }
+  // The owned particles, for CpuExecutor::run.
+  ParticleRange range() const { return {indices_.data(), indices_.size()}; }
+  // Which materials are owned, as a view a stage can hold.
+  OwnedMaterials materials() const { return {owns_.data(), owns_.size()}; }
 
  private:
   std::vector<std::uint8_t> owns_;      // per material: moved by this solver

@@ -1,7 +1,8 @@
-// The per-particle functions of PCISPH (Solenthaler & Pajarola 2009), written once for host and
-// device: the pressure acceleration and the predicted state.
+// The per-particle functions and stages of PCISPH (Solenthaler & Pajarola 2009), written once for
+// host and device: the predicted state, the pressure correction and the pressure acceleration.
 #pragma once
 
+#include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_view.h"
 
 namespace upf {
@@ -30,5 +31,46 @@ UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* 
   a -= boundary_gradient * (rho0 * pi);
   return a;
 }
+
+// Step 1 of the loop: v* = v + (a_other + a_p) dt, x* = x + v* dt.
+struct PcisphPredictStage {
+  FluidView f;
+  const Vec3* a_other;
+  const Vec3* a_pressure;
+  Real dt;
+  Vec3* x_star;
+  UPF_HD void operator()(std::uint32_t i) const {
+    const Vec3 v_star = f.v[i] + (a_other[i] + a_pressure[i]) * dt;
+    x_star[i] = f.x[i] + v_star * dt;
+  }
+};
+
+// Steps 2 and 3: rho* at the predicted positions, p += delta (rho* - rho0), clamped at 0.
+struct PcisphCorrectPressureStage {
+  FluidView f;
+  const Vec3* x_star;
+  Real delta;
+  Real* rho_star;
+  Real* pressure;
+  UPF_HD void operator()(std::uint32_t i) const {
+    rho_star[i] = fluid_density(f, x_star, i);
+    const Real rho0 = f.rest_density[f.material[i]];
+    const Real p = pressure[i] + delta * (rho_star[i] - rho0);
+    pressure[i] = p > 0 ? p : Real(0);
+  }
+};
+
+// Step 5: the pressure acceleration from the new pressures.
+struct PcisphPressureAccelerationStage {
+  FluidView f;
+  const Real* pressure;
+  const Vec3* fluid_gradient;
+  const Vec3* boundary_gradient;
+  Vec3* a_pressure;
+  UPF_HD void operator()(std::uint32_t i) const {
+    a_pressure[i] =
+        pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i], i);
+  }
+};
 
 }  // namespace upf

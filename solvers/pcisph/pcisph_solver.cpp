@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_forces.h"
@@ -56,70 +55,63 @@ Real PcisphSolver::max_time_step(const World& world) const {
   return fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
 }
 
-void PcisphSolver::step(World& world, Real dt) {
+std::vector<std::string> PcisphSolver::stages() const {
+  return {"non_pressure", "pressure", "integration"};
+}
+
+void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
   Particles& p = world.particles();
   const CpuExecutor& exec = world.executor();
-  const FluidView f = fluid_.begin_step(world);
-  const OwnedParticles& owned = fluid_.owned;
-  auto for_mine = [&](auto&& body) { owned.for_each(exec, body); };
-
-  Real* density = p.scalar_field("density").data();
-  Real* pressure = p.scalar_field("pressure").data();
-  Real* rho_star = p.scalar_field("pcisph.predicted_density").data();
-  Vec3* x_star = p.vector_field("pcisph.predicted_position").data();
-  Vec3* a_p = fluid_.pressure_acceleration.data();
-  const Vec3* a_other = fluid_.other_acceleration.data();
-  const Vec3* boundary_gradient = fluid_.boundary_gradient.data();
-  const Vec3* fluid_gradient = fluid_.fluid_gradient.data();
-
-  Stopwatch watch;
+  FluidView f;
+  Real* density = nullptr;
+  Real* pressure = nullptr;
   stats_ = SolverStats{};
 
   // Non-pressure forces: density and kernel gradients at the current positions, then gravity +
   // viscosity. Pressures start from zero.
-  fluid_.shared_forces(world, f, density);
-  for_mine([&](std::uint32_t i) {
-    pressure[i] = 0;
-    a_p[i] = Vec3{};
+  run("non_pressure", [&] {
+    f = fluid_.begin_step(world);
+    density = p.scalar_field("density").data();
+    pressure = p.scalar_field("pressure").data();
+    fluid_.shared_forces(world, f, density);
+    exec.run(fluid_.owned.range(),
+             ClearPressureStage{pressure, fluid_.pressure_acceleration.data()});
   });
-  stats_.stage_ms.emplace_back("non_pressure", watch.lap_ms());
 
   // Predict-correct loop. Particles this solver does not move (boundaries, bodies, other
   // fluids) are predicted once, moving on at their current velocity; static walls stay put.
-  fluid_.predict_unowned(world, f, x_star, dt);
-  const double delta = delta_scale_ / (double(dt) * double(dt));
-  double avg_error = 0;
-  int iteration = 0;
-  while (iteration < max_iterations_) {
-    for_mine([&](std::uint32_t i) {
-      const Vec3 v_star = f.v[i] + (a_other[i] + a_p[i]) * dt;
-      x_star[i] = f.x[i] + v_star * dt;
-    });
-    for_mine([&](std::uint32_t i) {
-      rho_star[i] = fluid_density(f, x_star, i);
-      const Real rho0 = f.rest_density[f.material[i]];
-      pressure[i] = std::max(Real(0), pressure[i] + Real(delta) * (rho_star[i] - rho0));
-    });
-    // The stopping test sums in fixed point: the same iteration count for any thread count.
-    avg_error = average_compression(exec, owned, f, rho_star);
-    for_mine([&](std::uint32_t i) {
-      a_p[i] = pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i], i);
-    });
-    ++iteration;
-    if (iteration >= min_iterations_ && avg_error <= eta_) break;
-  }
-  stats_.iterations = iteration;
-  stats_.avg_density_error = avg_error;
-  stats_.max_density_error = max_compression(exec, owned, f, rho_star);
-  stats_.stage_ms.emplace_back("pressure", watch.lap_ms());
+  run("pressure", [&] {
+    Real* rho_star = p.scalar_field("pcisph.predicted_density").data();
+    Vec3* x_star = p.vector_field("pcisph.predicted_position").data();
+    Vec3* a_p = fluid_.pressure_acceleration.data();
+    fluid_.predict_unowned(world, f, x_star, dt);
+    const Real delta = Real(delta_scale_ / (double(dt) * double(dt)));
+    const PcisphPredictStage predict{f, fluid_.other_acceleration.data(), a_p, dt, x_star};
+    const PcisphCorrectPressureStage correct{f, x_star, delta, rho_star, pressure};
+    const PcisphPressureAccelerationStage accelerate{f, pressure, fluid_.fluid_gradient.data(),
+                                                     fluid_.boundary_gradient.data(), a_p};
+    double avg_error = 0;
+    int iteration = 0;
+    while (iteration < max_iterations_) {
+      exec.run(fluid_.owned.range(), predict);
+      exec.run(fluid_.owned.range(), correct);
+      // The stopping test sums in fixed point: the same iteration count for any thread count.
+      avg_error = average_compression(exec, fluid_.owned, f, rho_star);
+      exec.run(fluid_.owned.range(), accelerate);
+      ++iteration;
+      if (iteration >= min_iterations_ && avg_error <= eta_) break;
+    }
+    stats_.iterations = iteration;
+    stats_.avg_density_error = avg_error;
+    stats_.max_density_error = max_compression(exec, fluid_.owned, f, rho_star);
+  });
 
   // Reactions on rigid bodies, then symplectic Euler with the final pressure forces.
-  fluid_.add_reactions(world, f, density, [&](std::uint32_t i) {
-    const Real rho0 = f.rest_density[f.material[i]];
-    return pressure[i] / (rho0 * rho0);
+  run("integration", [&] {
+    fluid_.add_reactions(world, f, density,
+                         PressureOverRestDensitySquared{pressure, f.rest_density, f.material});
+    fluid_.integrate(world, dt);
   });
-  fluid_.integrate(world, dt);
-  stats_.stage_ms.emplace_back("integration", watch.lap_ms());
 }
 
 }  // namespace upf

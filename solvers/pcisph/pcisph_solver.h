@@ -27,7 +27,8 @@ class PcisphSolver final : public Solver {
   std::string_view name() const override { return "pcisph"; }
   void prepare(World& world) override;
   Real max_time_step(const World& world) const override;
-  void step(World& world, Real dt) override;
+  std::vector<std::string> stages() const override;
+  void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
 
   static std::vector<ParamSpec> param_specs();

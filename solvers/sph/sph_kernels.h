@@ -79,4 +79,55 @@ UPF_HD Vec3 sph_viscosity_acceleration(const FluidView& f, const Kernels& w, con
   return a * (mu / density[i]);
 }
 
+// The stages of SPH, for a kernel set of sph_kernel_sets.h.
+template <class Kernels>
+struct SphDensityStage {
+  FluidView f;
+  Kernels kernels;
+  Real scale;
+  Real* density;
+  UPF_HD void operator()(std::uint32_t i) const { density[i] = sph_density(f, kernels, scale, i); }
+};
+
+template <class Kernels>
+struct SphViscosityStage {
+  FluidView f;
+  Kernels kernels;
+  const Real* density;
+  Real mu;
+  Vec3* a_other;
+  UPF_HD void operator()(std::uint32_t i) const {
+    a_other[i] += sph_viscosity_acceleration(f, kernels, density, mu, i);
+  }
+};
+
+struct SphPressureStage {
+  FluidView f;
+  const Real* density;
+  Real stiffness;
+  Real* pressure;
+  UPF_HD void operator()(std::uint32_t i) const {
+    pressure[i] = sph_pressure(density[i], f.rest_density[f.material[i]], stiffness);
+  }
+};
+
+template <class Kernels>
+struct SphPressureAccelerationStage {
+  FluidView f;
+  Kernels kernels;
+  const Real* density;
+  const Real* pressure;
+  Vec3* a_pressure;
+  UPF_HD void operator()(std::uint32_t i) const {
+    a_pressure[i] = sph_pressure_acceleration(f, kernels, density, pressure, i);
+  }
+};
+
+// The pressure gradient of a kernel set, for the boundary reactions.
+template <class Kernels>
+struct KernelSetPressureGradient {
+  Kernels kernels;
+  UPF_HD Vec3 operator()(const Vec3& r) const { return kernels.pressure_gradient(r); }
+};
+
 }  // namespace upf

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_time_step.h"
@@ -75,33 +76,26 @@ void SphSolver::with_kernels(const World& world, Visit&& visit) const {
 
 void SphSolver::add_own_non_pressure(const World& world, const FluidView& f, Real* density) {
   const CpuExecutor& exec = world.executor();
-  const OwnedParticles& owned = fluid().owned;
+  const ParticleRange mine = fluid().owned.range();
   Vec3* a_other = fluid().other_acceleration.data();
   with_kernels(world, [&](const auto& kernels, Real density_scale) {
+    using Kernels = std::decay_t<decltype(kernels)>;
     // The spline density is already there; another kernel's replaces it once the shared viscosity
     // has read it at every neighbour.
-    if (!cubic_spline_)
-      owned.for_each(
-          exec, [&](std::uint32_t i) { density[i] = sph_density(f, kernels, density_scale, i); });
-    if (mu_ > 0)
-      owned.for_each(exec, [&](std::uint32_t i) {
-        a_other[i] += sph_viscosity_acceleration(f, kernels, density, mu_, i);
-      });
+    if (!cubic_spline_) exec.run(mine, SphDensityStage<Kernels>{f, kernels, density_scale, density});
+    if (mu_ > 0) exec.run(mine, SphViscosityStage<Kernels>{f, kernels, density, mu_, a_other});
   });
 }
 
 void SphSolver::compute_pressure(const World& world, const FluidView& f, const Real* density,
                                  Real* pressure) {
   const CpuExecutor& exec = world.executor();
-  const OwnedParticles& owned = fluid().owned;
+  const ParticleRange mine = fluid().owned.range();
   Vec3* a_p = fluid().pressure_acceleration.data();
-  owned.for_each(exec, [&](std::uint32_t i) {
-    pressure[i] = sph_pressure(density[i], f.rest_density[f.material[i]], stiffness_);
-  });
+  exec.run(mine, SphPressureStage{f, density, stiffness_, pressure});
   with_kernels(world, [&](const auto& kernels, Real) {
-    owned.for_each(exec, [&](std::uint32_t i) {
-      a_p[i] = sph_pressure_acceleration(f, kernels, density, pressure, i);
-    });
+    using Kernels = std::decay_t<decltype(kernels)>;
+    exec.run(mine, SphPressureAccelerationStage<Kernels>{f, kernels, density, pressure, a_p});
   });
 }
 
@@ -110,10 +104,9 @@ void SphSolver::add_reactions(World& world, const FluidView& f, const Real* dens
   // The boundary term of sph_pressure_acceleration: P_i = p_i / (2 rho_i^2), with the pressure
   // kernel of the set in use.
   with_kernels(world, [&](const auto& kernels, Real) {
-    fluid().add_reactions(
-        world, f, density,
-        [&](std::uint32_t i) { return pressure[i] / (Real(2) * density[i] * density[i]); },
-        [&](const Vec3& r) { return kernels.pressure_gradient(r); });
+    using Kernels = std::decay_t<decltype(kernels)>;
+    fluid().add_reactions(world, f, density, PressureOverDensitySquared{pressure, density, Real(0.5)},
+                          KernelSetPressureGradient<Kernels>{kernels});
   });
 }
 

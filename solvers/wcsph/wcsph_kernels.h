@@ -57,4 +57,41 @@ UPF_HD inline Vec3 artificial_viscosity_acceleration(const FluidView& f, const R
   return a;
 }
 
+// p_i from the Tait equation, with B = rho0 c^2 / 7 per material.
+struct TaitPressureStage {
+  FluidView f;
+  const Real* density;
+  const Real* tait_factor;  // per material
+  Real* pressure;
+  UPF_HD void operator()(std::uint32_t i) const {
+    const MaterialId m = f.material[i];
+    pressure[i] = tait_pressure(density[i], f.rest_density[m], tait_factor[m]);
+  }
+};
+
+struct WcsphPressureAccelerationStage {
+  FluidView f;
+  const Real* density;
+  const Real* pressure;
+  const Vec3* fluid_gradient;
+  const Vec3* boundary_gradient;
+  Vec3* a_pressure;
+  UPF_HD void operator()(std::uint32_t i) const {
+    a_pressure[i] = wcsph_pressure_acceleration(f, density, pressure, fluid_gradient,
+                                                boundary_gradient[i], i);
+  }
+};
+
+// Adds the artificial viscosity to a_other.
+struct ArtificialViscosityStage {
+  FluidView f;
+  const Real* density;
+  const Vec3* fluid_gradient;
+  Real two_alpha_h_c;
+  Vec3* a_other;
+  UPF_HD void operator()(std::uint32_t i) const {
+    a_other[i] += artificial_viscosity_acceleration(f, density, fluid_gradient, two_alpha_h_c, i);
+  }
+};
+
 }  // namespace upf

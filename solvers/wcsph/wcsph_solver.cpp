@@ -42,27 +42,19 @@ void WcsphSolver::add_own_non_pressure(const World& world, const FluidView& f, R
   if (alpha_ <= 0) return;
   const Real h = Real(0.5) * world.settings().support_radius();  // the smoothing length
   const Real two_alpha_h_c = Real(2) * alpha_ * h * sound_speed_;
-  const Vec3* gradient = fluid().fluid_gradient.data();
-  Vec3* a_other = fluid().other_acceleration.data();
-  fluid().owned.for_each(world.executor(), [&](std::uint32_t i) {
-    a_other[i] += artificial_viscosity_acceleration(f, density, gradient, two_alpha_h_c, i);
-  });
+  world.executor().run(fluid().owned.range(),
+                       ArtificialViscosityStage{f, density, fluid().fluid_gradient.data(),
+                                                two_alpha_h_c, fluid().other_acceleration.data()});
 }
 
 void WcsphSolver::compute_pressure(const World& world, const FluidView& f, const Real* density,
                                    Real* pressure) {
   const CpuExecutor& exec = world.executor();
-  const Real* tait_factor = tait_factor_.data();
-  const Vec3* gradient = fluid().fluid_gradient.data();
-  const Vec3* boundary_gradient = fluid().boundary_gradient.data();
-  Vec3* a_p = fluid().pressure_acceleration.data();
-  fluid().owned.for_each(exec, [&](std::uint32_t i) {
-    const MaterialId m = f.material[i];
-    pressure[i] = tait_pressure(density[i], f.rest_density[m], tait_factor[m]);
-  });
-  fluid().owned.for_each(exec, [&](std::uint32_t i) {
-    a_p[i] = wcsph_pressure_acceleration(f, density, pressure, gradient, boundary_gradient[i], i);
-  });
+  exec.run(fluid().owned.range(), TaitPressureStage{f, density, tait_factor_.data(), pressure});
+  exec.run(fluid().owned.range(),
+           WcsphPressureAccelerationStage{f, density, pressure, fluid().fluid_gradient.data(),
+                                          fluid().boundary_gradient.data(),
+                                          fluid().pressure_acceleration.data()});
 }
 
 }  // namespace upf

@@ -32,7 +32,8 @@ class RunawaySolver : public Solver {
     world.particles().scalar_field("pressure", 0, true);
   }
   Real max_time_step(const World&) const override { return Real(1); }
-  void step(World& world, Real dt) override {
+  std::vector<std::string> stages() const override { return {}; }
+  void step(World& world, Real dt, StageRunner&) override {
     Particles& p = world.particles();
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (std::find(materials_.begin(), materials_.end(), p.material[i]) == materials_.end())

@@ -76,8 +76,11 @@ class RecordingSolver final : public Solver {
   std::string_view name() const override { return name_; }
   void prepare(World&) override {}
   Real max_time_step(const World&) const override { return Real(1); }
-  void step(World& world, Real) override {
-    log_->push_back(name_ + ":" + std::to_string(world.coupling()[kLiquid].size()));
+  std::vector<std::string> stages() const override { return {"record"}; }
+  void step(World& world, Real, StageRunner& run) override {
+    run("record", [&] {
+      log_->push_back(name_ + ":" + std::to_string(world.coupling()[kLiquid].size()));
+    });
   }
   SolverStats stats() const override { return {}; }
 

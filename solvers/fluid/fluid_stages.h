@@ -1,0 +1,111 @@
+// The per-particle stages every fluid solver shares (FluidSolverState runs them). Each is a plain
+// struct of views with a UPF_HD operator()(i) that writes only particle i (DESIGN.md, "Stages,
+// executors and backends"). C++17: nvcc compiles these too (fluid_cuda_check.cu).
+#pragma once
+
+#include "solvers/fluid/fluid_forces.h"
+#include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/owned_particles.h"
+
+namespace upf {
+
+// Density and kernel gradients at the current positions (fluid_forces.h).
+struct DensityAndGradientsStage {
+  FluidView f;
+  Vec3* fluid_gradient;     // per fluid-list slot
+  Vec3* boundary_gradient;  // per particle
+  Real* density;
+  UPF_HD void operator()(std::uint32_t i) const {
+    density[i] = density_and_gradients(f, fluid_gradient, boundary_gradient[i], i);
+  }
+};
+
+// a_other = g + the shared viscosity (fluid_forces.h).
+struct GravityAndViscosityStage {
+  FluidView f;
+  const Real* density;
+  const Vec3* fluid_gradient;
+  Vec3 gravity;
+  Vec3* a_other;
+  UPF_HD void operator()(std::uint32_t i) const {
+    a_other[i] = gravity + viscosity_acceleration(f, density, fluid_gradient, i);
+  }
+};
+
+// a += F / m: the force other materials put on particle i (CouplingArray::LiquidForce).
+struct AddForceOverMassStage {
+  const Vec3* force;
+  const Real* mass;
+  Vec3* acceleration;
+  UPF_HD void operator()(std::uint32_t i) const { acceleration[i] += force[i] / mass[i]; }
+};
+
+// x* = x + v dt for the particles a solver does not move (FluidSolverState::predict_unowned).
+struct PredictUnownedStage {
+  FluidView f;
+  OwnedMaterials owns;
+  Real dt;
+  Vec3* x_star;
+  UPF_HD void operator()(std::uint32_t i) const {
+    if (f.type[i] != ParticleType::Liquid || !owns(f.material[i])) x_star[i] = f.x[i] + f.v[i] * dt;
+  }
+};
+
+// Symplectic Euler: v += (a_other + a_pressure) dt, then x += v dt.
+struct SymplecticEulerStage {
+  const Vec3* a_other;
+  const Vec3* a_pressure;
+  Real dt;
+  Vec3* v;
+  Vec3* x;
+  UPF_HD void operator()(std::uint32_t i) const {
+    v[i] += (a_other[i] + a_pressure[i]) * dt;
+    x[i] += v[i] * dt;
+  }
+};
+
+// Zeroes a scalar and a vector per particle (pressures and pressure accelerations at step start).
+struct ClearPressureStage {
+  Real* pressure;
+  Vec3* a_pressure;
+  UPF_HD void operator()(std::uint32_t i) const {
+    pressure[i] = 0;
+    a_pressure[i] = Vec3{};
+  }
+};
+
+// The relative compression (rho_i - rho0_i) / rho0_i, clamped below at 0 (compression_stats.h).
+struct CompressionValue {
+  const Real* rest_density;  // per material
+  const MaterialId* material;
+  const Real* density;
+  UPF_HD Real operator()(std::uint32_t i) const {
+    const Real rho0 = rest_density[material[i]];
+    const Real e = (density[i] - rho0) / rho0;
+    return e > 0 ? e : Real(0);
+  }
+};
+
+// The pressure factors P_i of boundary_reactions.h, one struct per form.
+// PCISPH: p_i / rho0_i^2.
+struct PressureOverRestDensitySquared {
+  const Real* pressure;
+  const Real* rest_density;
+  const MaterialId* material;
+  UPF_HD Real operator()(std::uint32_t i) const {
+    const Real rho0 = rest_density[material[i]];
+    return pressure[i] / (rho0 * rho0);
+  }
+};
+
+// WCSPH and the default pair term: p_i / rho_i^2, scaled (SPH's symmetrised force: 1/2).
+struct PressureOverDensitySquared {
+  const Real* pressure;
+  const Real* density;
+  Real scale;
+  UPF_HD Real operator()(std::uint32_t i) const {
+    return scale * pressure[i] / (density[i] * density[i]);
+  }
+};
+
+}  // namespace upf
