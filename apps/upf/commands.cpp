@@ -26,16 +26,6 @@
 namespace upf::app {
 
 namespace {
-void print_params(const std::vector<ParamSpec>& specs) {
-  for (const auto& p : specs) {
-    std::printf("      %-20s %-8s default %-10g range [%g, %g]%s\n        %s\n", p.name.c_str(),
-                p.unit.c_str(), p.default_value, p.min_value, p.max_value,
-                p.integer ? " (whole number)" : "", p.description.c_str());
-  }
-}
-}  // namespace
-
-namespace {
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the scene file");
@@ -192,25 +182,6 @@ int validate_command(const std::vector<std::string>& files) {
     }
   }
   return bad ? static_cast<int>(ExitCode::BadInput) : 0;
-}
-
-int info_command() {
-  const Registry registry = make_app_registry();
-  std::printf("Material types (scene key materials/NAME/type):\n");
-  for (const auto& k : registry.material_kinds()) {
-    std::printf("  %s (particle type %s)%s%s\n    %s\n", k.name.c_str(),
-                std::string(to_string(k.type)).c_str(),
-                k.default_solver.empty() ? "" : ", default solver ", k.default_solver.c_str(),
-                k.summary.c_str());
-    if (!k.params.empty()) print_params(k.params);
-  }
-  std::printf("\nSolvers (scene key materials/NAME/solver):\n");
-  for (const auto& s : registry.solvers()) {
-    std::printf("  %s (for %s materials)\n    %s\n    reference: %s\n", s.name.c_str(),
-                std::string(to_string(s.type)).c_str(), s.summary.c_str(), s.reference.c_str());
-    print_params(s.params);
-  }
-  return 0;
 }
 
 }  // namespace upf::app

@@ -38,6 +38,5 @@ struct CompareArgs {
 int run_command(const RunArgs& args);
 int compare_command(const CompareArgs& args);
 int validate_command(const std::vector<std::string>& files);
-int info_command();
 
 }  // namespace upf::app

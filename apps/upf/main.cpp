@@ -8,7 +8,7 @@
 //            [--screenshot FILE.png [--exit-after N]]
 //   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
 //   upf validate SCENE...
-//   upf info
+//   upf info [--markdown]
 // Exit codes: 0 ok, 1 other failure (output, compare's plots), 2 bad input, 3 unstable run,
 // 130 interrupted (Ctrl-C: a checkpoint was written, the run can be resumed).
 #include <CLI/CLI.hpp>
@@ -18,6 +18,7 @@
 #include "app_registry.h"
 #include "commands.h"
 #include "framework/core/errors.h"
+#include "info_command.h"
 #include "render_command.h"
 #include "viewer/viewer.h"
 
@@ -114,7 +115,12 @@ int main(int argc, char** argv) {
   auto* validate = app.add_subcommand("validate", "check scene files; list every problem");
   validate->add_option("scenes", validate_files, "scene files")->required();
 
-  auto* info = app.add_subcommand("info", "list solvers and materials with their parameters");
+  bool info_markdown = false;
+  auto* info = app.add_subcommand(
+      "info", "list materials, solvers and world settings with their parameters");
+  info->add_flag("--markdown", info_markdown,
+                 "print the parameter tables as the Markdown blocks of docs/ "
+                 "(scripts/update-reference-docs copies them in)");
 
   try {
     app.parse(argc, argv);
@@ -136,7 +142,7 @@ int main(int argc, char** argv) {
     if (*render) return upf::app::render_command(render_args);
     if (*view) return upf::viewer::run_viewer(view_options, upf::app::make_app_registry());
     if (*validate) return upf::app::validate_command(validate_files);
-    if (*info) return upf::app::info_command();
+    if (*info) return upf::app::info_command(info_markdown);
   } catch (const upf::InputError& e) {
     std::cerr << "error: invalid input\n" << e.what() << '\n';
     return static_cast<int>(ExitCode::BadInput);

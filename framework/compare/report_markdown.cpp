@@ -1,22 +1,13 @@
 #include "framework/compare/report_documents.h"
 #include "framework/compare/report_table.h"
+#include "framework/core/markdown_cell.h"
 
 namespace upf {
 
 namespace {
-// A '|' inside a cell would end it.
-std::string cell(const std::string& text) {
-  std::string out;
-  for (char ch : text) {
-    if (ch == '|') out += '\\';
-    out += ch;
-  }
-  return out;
-}
-
 std::string table_row(const std::vector<std::string>& cells) {
   std::string out = "|";
-  for (const auto& c : cells) out += " " + cell(c) + " |";
+  for (const auto& c : cells) out += " " + markdown_cell(c) + " |";
   return out + "\n";
 }
 }  // namespace

@@ -25,9 +25,10 @@ const ParamSpec* find_spec(const std::vector<ParamSpec>& specs, const std::strin
 bool check_param(const ParamSpec& spec, double value, const std::string& where,
                  std::vector<InputProblem>& problems) {
   std::ostringstream msg;
-  if (!std::isfinite(value) || value < spec.min_value || value > spec.max_value) {
-    msg << spec.name << " = " << value << " is out of range [" << spec.min_value << ", "
-        << spec.max_value << "]";
+  const bool low = spec.exclusive_min ? !(value > spec.min_value) : value < spec.min_value;
+  if (!std::isfinite(value) || low || value > spec.max_value) {
+    msg << spec.name << " = " << value << " is out of range " << (spec.exclusive_min ? "(" : "[")
+        << spec.min_value << ", " << spec.max_value << "]";
     if (!spec.unit.empty() && spec.unit != "1") msg << " " << spec.unit;
     problems.push_back({where, msg.str()});
     return false;

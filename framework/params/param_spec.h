@@ -14,10 +14,13 @@ struct ParamSpec {
   std::string name;
   std::string unit;  // SI, "1" for dimensionless
   double default_value = 0;
-  double min_value = 0;  // inclusive
+  double min_value = 0;  // inclusive, unless exclusive_min
   double max_value = 0;  // inclusive
   std::string description;
   bool integer = false;
+  // Last, so that the brace-initialised tables that leave it out keep compiling: a step length or
+  // a frame rate must be above its lower bound, not equal to it.
+  bool exclusive_min = false;
 };
 
 // Parameter values by name, filled from defaults and overridden by the scene.

@@ -102,6 +102,14 @@ double JsonInput::number(const nlohmann::json& object, const std::string& path,
   return required_number(object, path, key, lo, hi, lo_open, unit).value_or(fallback);
 }
 
+double JsonInput::number(const nlohmann::json& object, const std::string& path,
+                         const ParamSpec& spec, double fallback) {
+  // "1" marks a dimensionless number: a message shows no unit for it.
+  const std::string_view unit = spec.unit == "1" ? std::string_view() : spec.unit;
+  return number(object, path, spec.name, fallback, spec.min_value, spec.max_value,
+                spec.exclusive_min, unit);
+}
+
 std::optional<std::string> JsonInput::string(const nlohmann::json& object, const std::string& path,
                                              std::string_view key, bool required) {
   auto it = object.find(std::string(key));

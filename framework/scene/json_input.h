@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "framework/core/errors.h"
+#include "framework/params/param_spec.h"
 
 namespace upf {
 
@@ -66,6 +67,9 @@ class JsonInput {
   std::optional<double> required_number(const nlohmann::json& object, const std::string& path,
                                         std::string_view key, double lo, double hi,
                                         bool lo_open = false, std::string_view unit = "");
+  // The number object[spec.name] checked against the spec's range, or `fallback` when absent.
+  double number(const nlohmann::json& object, const std::string& path, const ParamSpec& spec,
+                double fallback);
   std::optional<std::string> string(const nlohmann::json& object, const std::string& path,
                                     std::string_view key, bool required);
   std::optional<Eigen::Vector3d> vec3(const nlohmann::json& object, const std::string& path,

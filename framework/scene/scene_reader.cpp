@@ -3,9 +3,11 @@
 #include <unistd.h>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include "framework/scene/json_input.h"
+#include "framework/scene/world_setting_specs.h"
 
 namespace upf {
 
@@ -20,6 +22,19 @@ const std::vector<std::string> kTopKeys = {
     "containers", "fluid_blocks", "time",    "output",           "probes",
     "stability",  "neighbours",   "render"};
 const std::vector<std::string> kAxisNames = {"x", "y", "z"};
+
+std::vector<std::string> spec_names(const std::vector<ParamSpec>& specs) {
+  std::vector<std::string> names;
+  for (const auto& spec : specs) names.push_back(spec.name);
+  return names;
+}
+
+// The spec a section's reader asks for by name: a missing one is a programming error.
+const ParamSpec& spec_named(const std::vector<ParamSpec>& specs, const std::string& name) {
+  const ParamSpec* spec = find_spec(specs, name);
+  if (!spec) throw std::logic_error("no world-setting spec named '" + name + "'");
+  return *spec;
+}
 
 std::optional<int> read_axis(JsonInput& in, const json& object, const std::string& path,
                              std::string_view key, std::optional<int> fallback) {
@@ -239,27 +254,31 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   if (spacing) w.spacing = Real(*spacing);
   const double h = spacing.value_or(1.0);
 
-  // Time.
+  // Time, stability and neighbours: numbers checked against their specs.
   if (auto it = doc.find("time"); it != doc.end() && in.expect_object(*it, "/time")) {
-    in.check_keys(*it, "/time", {"end", "dt_min", "dt_max", "cfl", "fixed_dt"});
+    const auto specs = time_setting_specs();
+    in.check_keys(*it, "/time", spec_names(specs));
     auto& t = w.time;
-    t.end = in.number(*it, "/time", "end", t.end, 0, 1e7, true, "s");
-    t.dt_min = in.number(*it, "/time", "dt_min", t.dt_min, 0, 10, true, "s");
-    t.dt_max = in.number(*it, "/time", "dt_max", t.dt_max, 0, 10, true, "s");
-    t.cfl = in.number(*it, "/time", "cfl", t.cfl, 0, 1, true);
-    t.fixed_dt = in.number(*it, "/time", "fixed_dt", t.fixed_dt, 0, 10, false, "s");
+    t.end = in.number(*it, "/time", spec_named(specs, "end"), t.end);
+    t.dt_min = in.number(*it, "/time", spec_named(specs, "dt_min"), t.dt_min);
+    t.dt_max = in.number(*it, "/time", spec_named(specs, "dt_max"), t.dt_max);
+    t.cfl = in.number(*it, "/time", spec_named(specs, "cfl"), t.cfl);
+    t.fixed_dt = in.number(*it, "/time", spec_named(specs, "fixed_dt"), t.fixed_dt);
     if (t.dt_min > t.dt_max)
       in.problem("/time/dt_min", "dt_min (" + std::to_string(t.dt_min) +
                                      " s) is larger than dt_max (" + std::to_string(t.dt_max) +
                                      " s)");
   }
   if (auto it = doc.find("stability"); it != doc.end() && in.expect_object(*it, "/stability")) {
-    in.check_keys(*it, "/stability", {"max_speed"});
-    w.max_speed = in.number(*it, "/stability", "max_speed", w.max_speed, 0, 1e6, true, "m/s");
+    const auto specs = stability_setting_specs();
+    in.check_keys(*it, "/stability", spec_names(specs));
+    w.max_speed = in.number(*it, "/stability", spec_named(specs, "max_speed"), w.max_speed);
   }
   if (auto it = doc.find("neighbours"); it != doc.end() && in.expect_object(*it, "/neighbours")) {
-    in.check_keys(*it, "/neighbours", {"reorder_every"});
-    w.reorder_every = int(in.number(*it, "/neighbours", "reorder_every", w.reorder_every, 0, 1e6));
+    const auto specs = neighbour_setting_specs();
+    in.check_keys(*it, "/neighbours", spec_names(specs));
+    w.reorder_every =
+        int(in.number(*it, "/neighbours", spec_named(specs, "reorder_every"), w.reorder_every));
   }
 
   // Materials.
@@ -321,8 +340,11 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
 
   // Output.
   if (auto it = doc.find("output"); it != doc.end() && in.expect_object(*it, "/output")) {
-    in.check_keys(*it, "/output", {"fps", "fields", "formats"});
-    scene.output.fps = in.number(*it, "/output", "fps", scene.output.fps, 0, 1e6, true, "1/s");
+    const auto specs = output_setting_specs();
+    std::vector<std::string> keys = spec_names(specs);
+    keys.insert(keys.end(), {"fields", "formats"});
+    in.check_keys(*it, "/output", keys);
+    scene.output.fps = in.number(*it, "/output", spec_named(specs, "fps"), scene.output.fps);
     // Field names only: which fields exist is known once the solvers have created theirs, so
     // the run checks the names (check_output_fields in framework/run).
     if (auto f = it->find("fields"); f != it->end()) {

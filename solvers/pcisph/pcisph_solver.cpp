@@ -15,9 +15,13 @@ namespace upf {
 std::vector<ParamSpec> PcisphSolver::param_specs() {
   return {
       {"eta", "1", 0.01, 1e-6, 0.5,
-       "target average compression (rho - rho0)/rho0 that ends the correction loop"},
+       "target average compression (rho - rho0)/rho0: the correction loop ends once the average "
+       "falls below it"},
       {"min_iterations", "1", 3, 1, 1000, "correction iterations always done", true},
-      {"max_iterations", "1", 100, 1, 10000, "correction iterations at most", true},
+      {"max_iterations", "1", 100, 1, 10000,
+       "correction iterations at most; not checked against min_iterations: if min_iterations > "
+       "max_iterations, the loop stops at max_iterations",
+       true},
   };
 }
 

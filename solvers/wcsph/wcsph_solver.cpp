@@ -15,7 +15,8 @@ std::vector<ParamSpec> WcsphSolver::param_specs() {
       {"alpha", "1", 0.1, 0, 10,
        "artificial viscosity constant (the paper uses 0.08 to 0.5); 0 leaves only the shared "
        "viscosity, so comparisons isolate the pressure solver"},
-      {"cfl", "1", 0.4, 0.01, 1, "CFL number of dt <= cfl * spacing / (c + |v|max)"},
+      {"cfl", "1", 0.4, 0.01, 1,
+       "CFL number of dt <= cfl * spacing / (c + |v|max); it replaces time.cfl for WCSPH"},
   };
 }
 
