@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 namespace upf {
 
@@ -41,28 +42,70 @@ std::size_t Particles::add(const Vec3& x, const Vec3& v, Real m, ParticleType t,
 }
 
 void Particles::reserve(std::size_t n) {
-  position.reserve(n);
-  velocity.reserve(n);
-  mass.reserve(n);
-  type.reserve(n);
-  material.reserve(n);
-  id.reserve(n);
-  body.reserve(n);
-  boundary_volume.reserve(n);
+  for_each_builtin([n](auto& values) { values.reserve(n); }, *this);
+}
+
+template <class T>
+std::vector<T>& Particles::field_in(std::map<std::string, Field<T>>& fields,
+                                    const std::string& name, T init, bool exported) {
+  auto it = fields.find(name);
+  if (it == fields.end()) {
+    if (sealed_)
+      throw std::logic_error("particle field '" + name +
+                             "' was not declared: solvers declare their fields in prepare()");
+    it = fields.try_emplace(name).first;
+    it->second.values.assign(size(), init);
+  }
+  it->second.exported = it->second.exported || exported;
+  return it->second.values;
 }
 
 std::vector<Real>& Particles::scalar_field(const std::string& name, Real init, bool exported) {
-  auto [it, inserted] = scalars_.try_emplace(name);
-  if (inserted) it->second.values.assign(size(), init);
-  it->second.exported = it->second.exported || exported;
-  return it->second.values;
+  return field_in(scalars_, name, init, exported);
 }
 
 std::vector<Vec3>& Particles::vector_field(const std::string& name, Vec3 init, bool exported) {
-  auto [it, inserted] = vectors_.try_emplace(name);
-  if (inserted) it->second.values.assign(size(), init);
-  it->second.exported = it->second.exported || exported;
-  return it->second.values;
+  return field_in(vectors_, name, init, exported);
+}
+
+FieldHandle<Real> Particles::declare_scalar(const std::string& name, Real init, bool exported) {
+  field_in(scalars_, name, init, exported);
+  return {this, &scalars_.find(name)->second};
+}
+
+FieldHandle<Vec3> Particles::declare_vector(const std::string& name, Vec3 init, bool exported) {
+  field_in(vectors_, name, init, exported);
+  return {this, &vectors_.find(name)->second};
+}
+
+namespace {
+template <class T>
+std::string declared_names(const std::map<std::string, Field<T>>& fields) {
+  std::string names;
+  for (const auto& [name, f] : fields) names += (names.empty() ? "" : ", ") + name;
+  return names.empty() ? "none" : names;
+}
+}  // namespace
+
+FieldHandle<Real> Particles::scalar(const std::string& name, const std::string& who) {
+  auto it = scalars_.find(name);
+  if (it == scalars_.end())
+    throw std::logic_error("'" + who + "' reads the scalar particle field '" + name +
+                           "', which nobody declared (declared: " + declared_names(scalars_) + ")");
+  return {this, &it->second};
+}
+
+FieldHandle<Vec3> Particles::vector(const std::string& name, const std::string& who) {
+  auto it = vectors_.find(name);
+  if (it == vectors_.end())
+    throw std::logic_error("'" + who + "' reads the vector particle field '" + name +
+                           "', which nobody declared (declared: " + declared_names(vectors_) + ")");
+  return {this, &it->second};
+}
+
+void Particles::check_owner(const Particles* owner, bool valid) const {
+  if (!valid) throw std::logic_error("a particle field handle that was never declared");
+  if (owner != this) throw std::logic_error("a particle field handle of other particles");
 }
 
 const std::vector<Real>* Particles::find_scalar(const std::string& name) const {
@@ -85,14 +128,7 @@ void Particles::permute(const std::vector<std::uint32_t>& order) {
 }
 
 void Particles::take(const std::vector<std::uint32_t>& order) {
-  apply_order(position, order, permute_scratch_);
-  apply_order(velocity, order, permute_scratch_);
-  apply_order(mass, order, permute_scratch_);
-  apply_order(type, order, permute_scratch_);
-  apply_order(material, order, permute_scratch_);
-  apply_order(id, order, permute_scratch_);
-  apply_order(body, order, permute_scratch_);
-  apply_order(boundary_volume, order, permute_scratch_);
+  for_each_builtin([&](auto& values) { apply_order(values, order, permute_scratch_); }, *this);
   for (auto& [name, f] : scalars_) apply_order(f.values, order, permute_scratch_);
   for (auto& [name, f] : vectors_) apply_order(f.values, order, permute_scratch_);
 }
@@ -107,28 +143,14 @@ std::size_t Particles::remove(const std::vector<std::uint8_t>& doomed) {
   // take() fills the first kept.size() slots; the rest are cut off.
   take(kept);
   const std::size_t n = kept.size();
-  position.resize(n);
-  velocity.resize(n);
-  mass.resize(n);
-  type.resize(n);
-  material.resize(n);
-  id.resize(n);
-  body.resize(n);
-  boundary_volume.resize(n);
+  for_each_builtin([n](auto& values) { values.resize(n); }, *this);
   for (auto& [name, f] : scalars_) f.values.resize(n);
   for (auto& [name, f] : vectors_) f.values.resize(n);
   return removed;
 }
 
 void Particles::snapshot_into(Particles& into) const {
-  into.position = position;
-  into.velocity = velocity;
-  into.mass = mass;
-  into.type = type;
-  into.material = material;
-  into.id = id;
-  into.body = body;
-  into.boundary_volume = boundary_volume;
+  for_each_builtin([](const auto& from, auto& to) { to = from; }, *this, into);
   for (const auto& [name, f] : scalars_)
     if (f.exported) into.scalars_[name] = f;
   for (const auto& [name, f] : vectors_)
@@ -168,14 +190,7 @@ void restore_fields(StateReader& in, std::map<std::string, Field<T>>& fields, st
 void Particles::save_state(StateWriter& out) const {
   out.section("particles");
   out.put(next_id_);
-  out.put_vector(position);
-  out.put_vector(velocity);
-  out.put_vector(mass);
-  out.put_vector(type);
-  out.put_vector(material);
-  out.put_vector(id);
-  out.put_vector(body);
-  out.put_vector(boundary_volume);
+  for_each_builtin([&out](const auto& values) { out.put_vector(values); }, *this);
   save_fields(out, scalars_);
   save_fields(out, vectors_);
 }
@@ -185,18 +200,10 @@ void Particles::restore_state(StateReader& in) {
   const auto next_id = in.get<ParticleId>();
   in.expect(next_id == next_id_, "the particle id count (" + std::to_string(next_id) + " saved, " +
                                      std::to_string(next_id_) + " here)");
-  in.get_vector(position);
+  for_each_builtin([&in](auto& values) { in.get_vector(values); }, *this);
   const std::size_t n = position.size();
-  in.get_vector(velocity);
-  in.get_vector(mass);
-  in.get_vector(type);
-  in.get_vector(material);
-  in.get_vector(id);
-  in.get_vector(body);
-  in.get_vector(boundary_volume);
-  const bool sizes = velocity.size() == n && mass.size() == n && type.size() == n &&
-                     material.size() == n && id.size() == n && body.size() == n &&
-                     boundary_volume.size() == n;
+  bool sizes = true;
+  for_each_builtin([&](const auto& values) { sizes = sizes && values.size() == n; }, *this);
   in.expect(sizes, "the particle arrays' lengths");
   restore_fields(in, scalars_, n);
   restore_fields(in, vectors_, n);

@@ -13,6 +13,7 @@
 
 #include "framework/core/particle_type.h"
 #include "framework/core/vec3.h"
+#include "framework/particles/field_handle.h"
 
 namespace upf {
 
@@ -33,7 +34,8 @@ struct Field {
 
 class Particles {
  public:
-  // Built-in arrays, all of size size().
+  // Built-in arrays, all of size size(). for_each_builtin lists them once for every operation
+  // that treats them alike.
   std::vector<Vec3> position;
   std::vector<Vec3> velocity;
   std::vector<Real> mass;
@@ -52,9 +54,29 @@ class Particles {
                   BodyId b = kNoBody);
   void reserve(std::size_t n);
 
-  // Named fields: created on first request (filled with `init`), found afterwards.
+  // Named fields: created on first request (filled with `init`), found afterwards. Once the
+  // world is prepared (seal_fields) a name nobody declared is an error that names the field.
   std::vector<Real>& scalar_field(const std::string& name, Real init = 0, bool exported = false);
   std::vector<Vec3>& vector_field(const std::string& name, Vec3 init = {}, bool exported = false);
+  // The same, as typed handles: what a solver declares in prepare() and uses in step().
+  FieldHandle<Real> declare_scalar(const std::string& name, Real init = 0, bool exported = false);
+  FieldHandle<Vec3> declare_vector(const std::string& name, Vec3 init = {}, bool exported = false);
+  // A field someone else declared, for `who` (a solver or system name, for the error).
+  FieldHandle<Real> scalar(const std::string& name, const std::string& who);
+  FieldHandle<Vec3> vector(const std::string& name, const std::string& who);
+  // The values behind a handle of this Particles.
+  template <class T>
+  std::vector<T>& operator[](FieldHandle<T> h) {
+    check_owner(h.owner_, h.valid());
+    return h.field_->values;
+  }
+  template <class T>
+  const std::vector<T>& operator[](FieldHandle<T> h) const {
+    check_owner(h.owner_, h.valid());
+    return h.field_->values;
+  }
+  // From here on, asking for a field nobody declared throws (World::prepare calls it).
+  void seal_fields(bool sealed = true) { sealed_ = sealed; }
   const std::vector<Real>* find_scalar(const std::string& name) const;
   const std::vector<Vec3>* find_vector(const std::string& name) const;
   std::vector<Vec3>* find_vector(const std::string& name);
@@ -80,12 +102,30 @@ class Particles {
   void restore_state(StateReader& in);
 
  private:
+  // visit(a.position, b.position, ...), then velocity, ... for every built-in array, in the order
+  // of checkpoints. One list, so a new built-in array cannot be forgotten by one operation.
+  template <class Visit, class... P>
+  static void for_each_builtin(Visit&& visit, P&... p) {
+    visit(p.position...);
+    visit(p.velocity...);
+    visit(p.mass...);
+    visit(p.type...);
+    visit(p.material...);
+    visit(p.id...);
+    visit(p.body...);
+    visit(p.boundary_volume...);
+  }
+  void check_owner(const Particles* owner, bool valid) const;
+  template <class T>
+  std::vector<T>& field_in(std::map<std::string, Field<T>>& fields, const std::string& name, T init,
+                           bool exported);
   // new[i] = old[order[i]] for i < order.size() in every array, sizes unchanged.
   void take(const std::vector<std::uint32_t>& order);
 
   std::map<std::string, Field<Real>> scalars_;
   std::map<std::string, Field<Vec3>> vectors_;
   ParticleId next_id_ = 0;
+  bool sealed_ = false;
   std::vector<std::uint8_t> permute_scratch_;
 };
 

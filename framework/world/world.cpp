@@ -66,6 +66,7 @@ int World::request_neighbours(TypeMask query, TypeMask target, Real radius) {
 }
 
 void World::prepare() {
+  particles_.seal_fields(false);  // a second prepare() may declare more
   order_solvers();
   // Boundary particles keep their shape (walls stand still, a body moves as a whole), so their
   // volumes are computed once, here, each over its own body or over the walls.
@@ -81,6 +82,8 @@ void World::prepare() {
     s->prepare(*this);
     stage_runners_.emplace_back(s->stages());
   }
+  // Every field is declared now: a later request for an unknown name is a misspelling.
+  particles_.seal_fields();
   prepared_ = true;
   update_neighbours();
 }

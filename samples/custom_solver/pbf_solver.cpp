@@ -67,14 +67,14 @@ double PbfSolver::template_denominator(Real spacing, const CubicSplineKernel& ke
 void PbfSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
   Particles& p = world.particles();
-  p.scalar_field("pbf.lambda", 0, true);
-  p.scalar_field("pbf.predicted_density");
-  p.vector_field("pbf.predicted_position");
-  p.vector_field("pbf.position_correction");
-  p.vector_field("pbf.displacement");
-  p.vector_field("pbf.boundary_gradient");
-  p.vector_field("pbf.velocity");
-  p.vector_field("pbf.vorticity");
+  fields_.lambda = p.declare_scalar("pbf.lambda", 0, true);
+  fields_.predicted_density = p.declare_scalar("pbf.predicted_density");
+  fields_.predicted_position = p.declare_vector("pbf.predicted_position");
+  fields_.position_correction = p.declare_vector("pbf.position_correction");
+  fields_.displacement = p.declare_vector("pbf.displacement");
+  fields_.boundary_gradient = p.declare_vector("pbf.boundary_gradient");
+  fields_.velocity = p.declare_vector("pbf.velocity");
+  fields_.vorticity = p.declare_vector("pbf.vorticity");
   reference_speed_ = free_fall_speed(world);
 
   // The paper's epsilon and k, which assume unit masses, in SI units for this spacing.
@@ -94,8 +94,8 @@ Real PbfSolver::max_time_step(const World& world) const {
 
 void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
   Particles& p = world.particles();
-  Real* density = p.scalar_field("density").data();
-  Vec3* xs = p.vector_field("pbf.predicted_position").data();
+  Real* density = p[fluid_.density_field].data();
+  Vec3* xs = p[fields_.predicted_position].data();
 
   // The density at x is what frames show as "density" (as for the other fluid solvers); the
   // shared forces: gravity, viscosity and the force of other materials (grains).
@@ -104,7 +104,7 @@ void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
   fluid_.predict_unowned(world, f, xs, dt);
   world.executor().run(fluid_.owned.range(),
                        PbfPredictStage{f, fluid_.other_acceleration.data(), dt,
-                                       p.vector_field("pbf.displacement").data(), xs});
+                                       p[fields_.displacement].data(), xs});
   // The shared viscosity's reaction on bodies (no pressure term: the corrections add theirs).
   fluid_.add_reactions(world, f, density, NoPressureFactor{});
 }
@@ -123,17 +123,17 @@ void PbfSolver::solve_constraints(World& world, const FluidView& f, Real dt) {
   Particles& p = world.particles();
   const CpuExecutor& exec = world.executor();
   const ParticleRange mine = fluid_.owned.range();
-  Real* pressure = p.scalar_field("pressure").data();
-  Real* lambda = p.scalar_field("pbf.lambda").data();
-  Real* rho = p.scalar_field("pbf.predicted_density").data();
-  Vec3* xs = p.vector_field("pbf.predicted_position").data();
-  Vec3* dx = p.vector_field("pbf.position_correction").data();
-  Vec3* disp = p.vector_field("pbf.displacement").data();
+  Real* pressure = p[fluid_.pressure_field].data();
+  Real* lambda = p[fields_.lambda].data();
+  Real* rho = p[fields_.predicted_density].data();
+  Vec3* xs = p[fields_.predicted_position].data();
+  Vec3* dx = p[fields_.position_correction].data();
+  Vec3* disp = p[fields_.displacement].data();
   const std::size_t slots = world.neighbours(fluid_.lists.fluid).total();
   pair_gradient_.resize(slots);
   pair_tensile_.resize(slots);
   const PbfPairTerms terms{pair_gradient_.data(), pair_tensile_.data(),
-                           p.vector_field("pbf.boundary_gradient").data(), rho};
+                           p[fields_.boundary_gradient].data(), rho};
   const Real inv_dt2 = Real(1) / (dt * dt);
   exec.run(mine, ZeroScalarStage{pressure});
 
@@ -160,11 +160,11 @@ void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
   const CpuExecutor& exec = world.executor();
   const ParticleRange mine = fluid_.owned.range();
   Vec3* v = p.velocity.data();
-  Vec3* v_new = p.vector_field("pbf.velocity").data();
-  Vec3* omega = p.vector_field("pbf.vorticity").data();
+  Vec3* v_new = p[fields_.velocity].data();
+  Vec3* omega = p[fields_.vorticity].data();
 
-  exec.run(mine, PbfTakePredictionStage{p.vector_field("pbf.predicted_position").data(),
-                                        p.vector_field("pbf.displacement").data(), dt,
+  exec.run(mine, PbfTakePredictionStage{p[fields_.predicted_position].data(),
+                                        p[fields_.displacement].data(), dt,
                                         p.position.data(), v});
   // f views the particle arrays, so from here on it sees the new positions and velocities.
   // XSPH and confinement read the neighbours' new velocities: results go to a scratch field

@@ -88,6 +88,11 @@ class PbfSolver final : public Solver {
   bool unilateral_;
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;  // owned particles, lists, materials, shared forces, reactions
+  struct Fields {
+    FieldHandle<Real> lambda, predicted_density;
+    FieldHandle<Vec3> predicted_position, position_correction, displacement, boundary_gradient,
+        velocity, vorticity;
+  } fields_;
   PbfConstants constants_;
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;

@@ -39,10 +39,11 @@ void DemSolver::prepare(World& world) {
   pairs_ = std::make_unique<DemPairs>(world.materials(), world.settings().spacing);
   substep_ = Real(substep_fraction_) * pairs_->shortest_contact_time(model_);
 
-  std::vector<Real>& radius = p.scalar_field(kRadiusField, 0, true);
-  p.vector_field(kAngularVelocityField, {}, true);
-  p.vector_field(kForceField);
-  p.vector_field(kTorqueField);
+  radius_ = p.declare_scalar(kRadiusField, 0, true);
+  angular_velocity_ = p.declare_vector(kAngularVelocityField, {}, true);
+  force_ = p.declare_vector(kForceField);
+  torque_ = p.declare_vector(kTorqueField);
+  std::vector<Real>& radius = p[radius_];
   primed_ = false;
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.type[i] == ParticleType::Granular) radius[i] = pairs_->grain(p.material[i]).radius;
@@ -105,7 +106,7 @@ void DemSolver::step(World& world, Real dt, StageRunner& run) {
     sources.grains = &world.neighbours(grains_list_);
     sources.reactions = reaction_list_ >= 0 ? &world.neighbours(reaction_list_) : nullptr;
     sources.boxes = &world.containers();
-    sources.radius = particles.find_scalar(kRadiusField)->data();
+    sources.radius = particles[radius_].data();
     sources.skin = skin_;
     contacts_.rebuild(particles, owned_, sources, world.executor());
     // Velocity Verlet (as in LIGGGHTS): kick half, drift, forces at the new positions with the
@@ -153,7 +154,7 @@ void DemSolver::interpolate_fluid(World& world) {
       DemFluidStateStage{view_of(world.neighbours(grain_liquid_list_)),
                          view_of(world.neighbours(grain_voidage_list_)), world.kernel(),
                          p.position.data(), p.velocity.data(), p.mass.data(), p.type.data(),
-                         p.material.data(), p.find_scalar(kRadiusField)->data(),
+                         p.material.data(), p[radius_].data(),
                          liquid_density_.data(), liquid_viscosity_.data(),
                          fluid_weight_sum_.data(), fluid_.data()});
 }
@@ -178,9 +179,9 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
                      pairs_->table(),
                      p.position.data(),
                      p.velocity.data(),
-                     p.find_vector(kAngularVelocityField)->data(),
+                     p[angular_velocity_].data(),
                      p.mass.data(),
-                     p.find_scalar(kRadiusField)->data(),
+                     p[radius_].data(),
                      p.type.data(),
                      p.material.data(),
                      world.containers().data(),
@@ -190,15 +191,15 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
                      fluid_.empty() ? nullptr : fluid_.data(),
                      fluid_weight,
                      fluid_force_.data(),
-                     p.find_vector(kForceField)->data(),
-                     p.find_vector(kTorqueField)->data()});
+                     p[force_].data(),
+                     p[torque_].data()});
 }
 
 void DemSolver::gather_pairs(World& world) {
   Particles& p = world.particles();
   world.executor().run(owned_.range(),
-                       DemGatherPairsStage{contacts_.view(), p.find_vector(kForceField)->data(),
-                                           p.find_vector(kTorqueField)->data()});
+                       DemGatherPairsStage{contacts_.view(), p[force_].data(),
+                                           p[torque_].data()});
 }
 
 void DemSolver::substep_reactions(World& world, Real weight) {
@@ -212,10 +213,10 @@ void DemSolver::kick_drift(World& world, Real h_kick, Real h_drift) {
   Particles& p = world.particles();
   world.executor().run(
       owned_.range(),
-      DemKickDriftStage{p.find_vector(kForceField)->data(), p.find_vector(kTorqueField)->data(),
-                        p.mass.data(), p.find_scalar(kRadiusField)->data(), h_kick, h_drift,
+      DemKickDriftStage{p[force_].data(), p[torque_].data(),
+                        p.mass.data(), p[radius_].data(), h_kick, h_drift,
                         p.position.data(), p.velocity.data(),
-                        p.vector_field(kAngularVelocityField).data()});
+                        p[angular_velocity_].data()});
 }
 
 }  // namespace upf

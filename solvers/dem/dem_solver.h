@@ -76,6 +76,8 @@ class DemSolver : public Solver {
   std::vector<std::uint32_t> rigid_;  // rigid boundary particles, this step
   std::unique_ptr<DemPairs> pairs_;
   DemContactList contacts_;  // this world step's candidates and their springs
+  FieldHandle<Real> radius_;
+  FieldHandle<Vec3> angular_velocity_, force_, torque_;
   int grains_list_ = -1, reaction_list_ = -1;
   Real substep_ = 0, h_ = 0;
   Real skin_ = 0;        // m, how far contact lists reach beyond the longest contact

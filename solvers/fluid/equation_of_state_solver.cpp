@@ -30,8 +30,8 @@ void EquationOfStateSolver::step(World& world, Real dt, StageRunner& run) {
 
   run("non_pressure", [&] {
     f = fluid_.begin_step(world);
-    density = p.scalar_field("density").data();
-    pressure = p.scalar_field("pressure").data();
+    density = p[fluid_.density_field].data();
+    pressure = p[fluid_.pressure_field].data();
     fluid_.shared_forces(world, f, density);
     add_own_non_pressure(world, f, density);
   });

@@ -9,8 +9,8 @@ namespace upf {
 
 void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& materials) {
   Particles& p = world.particles();
-  p.scalar_field("density", 0, true);
-  p.scalar_field("pressure", 0, true);
+  density_field = p.declare_scalar("density", 0, true);
+  pressure_field = p.declare_scalar("pressure", 0, true);
   lists.request(world);
   // Reactions are gathered from the rigid side: for each rigid particle, its liquid neighbours.
   if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)

@@ -32,6 +32,7 @@ struct FluidSolverState {
   int reaction_list = -1;  // rigid -> liquid, when a body system collects reactions
   OwnedParticles owned;
   Real max_viscosity = 0;  // [m^2/s] largest kinematic viscosity of the owned materials
+  FieldHandle<Real> density_field, pressure_field;  // the exported fields every fluid solver writes
 
   // Per-step buffers, rewritten every step (so they need no reordering with the particles).
   std::vector<Vec3> fluid_gradient;         // grad W_ij per fluid-list slot

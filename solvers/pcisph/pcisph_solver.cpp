@@ -49,8 +49,8 @@ double PcisphSolver::template_delta_scale(Real spacing, const CubicSplineKernel&
 void PcisphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
   Particles& p = world.particles();
-  p.vector_field("pcisph.predicted_position");
-  p.scalar_field("pcisph.predicted_density");
+  predicted_position_ = p.declare_vector("pcisph.predicted_position");
+  predicted_density_ = p.declare_scalar("pcisph.predicted_density");
   reference_speed_ = free_fall_speed(world);
   delta_scale_ = template_delta_scale(world.settings().spacing, world.kernel());
 }
@@ -75,8 +75,8 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
   // viscosity. Pressures start from zero.
   run("non_pressure", [&] {
     f = fluid_.begin_step(world);
-    density = p.scalar_field("density").data();
-    pressure = p.scalar_field("pressure").data();
+    density = p[fluid_.density_field].data();
+    pressure = p[fluid_.pressure_field].data();
     fluid_.shared_forces(world, f, density);
     exec.run(fluid_.owned.range(),
              ClearPressureStage{pressure, fluid_.pressure_acceleration.data()});
@@ -85,8 +85,8 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
   // Predict-correct loop. Particles this solver does not move (boundaries, bodies, other
   // fluids) are predicted once, moving on at their current velocity; static walls stay put.
   run("pressure", [&] {
-    Real* rho_star = p.scalar_field("pcisph.predicted_density").data();
-    Vec3* x_star = p.vector_field("pcisph.predicted_position").data();
+    Real* rho_star = p[predicted_density_].data();
+    Vec3* x_star = p[predicted_position_].data();
     Vec3* a_p = fluid_.pressure_acceleration.data();
     fluid_.predict_unowned(world, f, x_star, dt);
     const Real delta = Real(delta_scale_ / (double(dt) * double(dt)));

@@ -41,6 +41,8 @@ class PcisphSolver final : public Solver {
   int min_iterations_, max_iterations_;
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;
+  FieldHandle<Vec3> predicted_position_;
+  FieldHandle<Real> predicted_density_;
   double delta_scale_ = 0;    // delta = delta_scale_ / dt^2
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
