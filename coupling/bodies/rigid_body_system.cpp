@@ -4,16 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <iomanip>
 
 #include "coupling/mesh/closed_mesh.h"
-#include "framework/checkpoint/state_stream.h"
 #include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
+#include "framework/core/state_stream.h"
 #include "framework/core/vec3_eigen.h"
-#include "framework/output/mesh_vtp_writer.h"
-#include "framework/output/resumed_log.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -290,16 +286,10 @@ Eigen::Vector3d RigidBodySystem::momentum() const {
   return total;
 }
 
-void RigidBodySystem::open_outputs(const std::filesystem::path& out_dir, bool write_frames) {
-  write_meshes_ = write_frames;
-  csv_path_ = out_dir / "bodies.csv";
-  if (resume_csv_size_ >= 0) {  // restored before the outputs opened: a resumed run
-    reopen_csv();
-    return;
-  }
-  csv_.open(csv_path_, std::ios::trunc);
-  if (!csv_) throw OutputError("cannot write " + csv_path_.string());
-  csv_ << "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,fx,fy,fz,tx,ty,tz\n";
+std::vector<NamedBodyState> RigidBodySystem::body_states() const {
+  std::vector<NamedBodyState> states;
+  for (const Body& b : bodies_) states.push_back({b.source.name, b.state});
+  return states;
 }
 
 std::vector<MeshPiece> RigidBodySystem::surface_meshes() const {
@@ -314,41 +304,6 @@ std::vector<MeshPiece> RigidBodySystem::surface_meshes() const {
     pieces.push_back(std::move(piece));
   }
   return pieces;
-}
-
-std::vector<std::string> RigidBodySystem::write_frame(const std::filesystem::path& out_dir,
-                                                      int frame, double time) {
-  std::vector<std::string> files;
-  if (write_meshes_) {
-    const std::vector<MeshPiece> pieces = surface_meshes();
-    std::vector<double> speed, force;
-    for (const Body& b : bodies_) {
-      speed.push_back(b.state.velocity.norm());
-      force.push_back(b.state.fluid_force.norm());
-    }
-    char name[64];
-    std::snprintf(name, sizeof name, "frames/bodies_%05d.vtp", frame);
-    write_mesh_vtp(out_dir / name, pieces, {{"speed", speed}, {"fluid_force", force}});
-    files.push_back(name);
-  }
-  if (csv_.is_open()) {
-    csv_ << std::setprecision(9);
-    for (std::size_t b = 0; b < bodies_.size(); ++b) {
-      const BodyState& s = bodies_[b].state;
-      csv_ << time << ',' << b << ',' << bodies_[b].source.name;
-      for (double c :
-           {s.position.x(), s.position.y(), s.position.z(), s.orientation.w(), s.orientation.x(),
-            s.orientation.y(), s.orientation.z(), s.velocity.x(), s.velocity.y(), s.velocity.z(),
-            s.angular_velocity.x(), s.angular_velocity.y(), s.angular_velocity.z(),
-            s.fluid_force.x(), s.fluid_force.y(), s.fluid_force.z(), s.fluid_torque.x(),
-            s.fluid_torque.y(), s.fluid_torque.z()})
-        csv_ << ',' << c;
-      csv_ << '\n';
-    }
-    csv_.flush();
-    if (!csv_) throw OutputError("cannot write " + csv_path_.string() + " (disk full?)");
-  }
-  return files;
 }
 
 namespace {
@@ -384,10 +339,6 @@ void RigidBodySystem::save_state(StateWriter& out) const {
     put_vector3(out, b.state.fluid_force);
     put_vector3(out, b.state.fluid_torque);
   }
-  // write_frame flushes bodies.csv, so its size on disk is all of it.
-  std::error_code ec;
-  const auto csv_size = csv_.is_open() ? std::filesystem::file_size(csv_path_, ec) : 0;
-  out.put(csv_.is_open() && !ec ? std::int64_t(csv_size) : std::int64_t(-1));
 }
 
 void RigidBodySystem::restore_state(StateReader& in) {
@@ -413,14 +364,6 @@ void RigidBodySystem::restore_state(StateReader& in) {
     b.state.fluid_torque = get_vector3(in);
   }
   read_states();
-  resume_csv_size_ = in.get<std::int64_t>();
-  if (csv_.is_open() && resume_csv_size_ >= 0) reopen_csv();
-}
-
-void RigidBodySystem::reopen_csv() {
-  // bodies.csv as it was at the checkpoint: rows written after it are written again.
-  reopen_log_at(csv_, csv_path_, std::uintmax_t(resume_csv_size_));
-  resume_csv_size_ = -1;
 }
 
 }  // namespace upf

@@ -18,7 +18,6 @@
 #pragma once
 
 #include <Eigen/Geometry>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,16 +39,6 @@ inline constexpr const char* kBodyLocalPositionField = "body.local_position";
 struct StaticWall {
   Eigen::Vector3d center, half_extents;
   double friction = 0.5, restitution = 0.1;
-};
-
-// The state of a body as reported in bodies.csv.
-struct BodyState {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // frame origin (centre of mass if dynamic)
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // relative to the start
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
-  Eigen::Vector3d fluid_force = Eigen::Vector3d::Zero();   // N, the last step's
-  Eigen::Vector3d fluid_torque = Eigen::Vector3d::Zero();  // N m, about the frame origin
 };
 
 class RigidBodySystem : public BodySystem {
@@ -81,9 +70,7 @@ class RigidBodySystem : public BodySystem {
   void advance(World& world, double dt) override;
   double max_time_step(const World& world) const override;
   std::vector<MeshPiece> surface_meshes() const override;
-  void open_outputs(const std::filesystem::path& out_dir, bool write_frames) override;
-  std::vector<std::string> write_frame(const std::filesystem::path& out_dir, int frame,
-                                       double time) override;
+  std::vector<NamedBodyState> body_states() const override;
   void save_state(StateWriter& out) const override;
   void restore_state(StateReader& in) override;
 
@@ -99,8 +86,6 @@ class RigidBodySystem : public BodySystem {
   // A new Bullet world with the walls and every body at its start (constructor, restore_state).
   void build_bullet();
   void read_states();
-  // Reopens bodies.csv for appending at its length at the checkpoint (resume_csv_size_).
-  void reopen_csv();
   void update_kinematic(double t, double dt);
   // Where body b stands at time t (a dynamic body: where Bullet has it now).
   BodyFrame frame_of(const Body& body, double t) const;
@@ -115,10 +100,6 @@ class RigidBodySystem : public BodySystem {
   PenetrationGuard guard_;
   std::vector<const MeshInsideTest*> guarded_meshes_;  // per body; null: not guarded
   double time_ = 0;
-  std::ofstream csv_;
-  std::filesystem::path csv_path_;
-  bool write_meshes_ = false;
-  std::int64_t resume_csv_size_ = -1;  // bodies.csv's length at a restored checkpoint
 };
 
 }  // namespace upf

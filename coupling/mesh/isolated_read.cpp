@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "coupling/mesh/mesh_error.h"
-#include "framework/checkpoint/state_stream.h"
 #include "framework/core/errors.h"
+#include "framework/core/state_stream.h"
 
 namespace upf {
 

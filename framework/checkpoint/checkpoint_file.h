@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/checkpoint/state_stream.h"
+#include "framework/core/state_stream.h"
 
 namespace upf {
 

@@ -9,22 +9,14 @@
 // CellData, appended data).
 #pragma once
 
-#include <Eigen/Core>
-#include <array>
-#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace upf {
+#include "framework/core/mesh_piece.h"
 
-// One closed triangle mesh, already in world coordinates.
-struct MeshPiece {
-  std::string name;  // e.g. the body's name; used in error messages, not written to the file
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into `vertices`
-};
+namespace upf {
 
 // Writes all `pieces` into one PolyData file at `path`, atomically (see write_file_atomically).
 // Points are Float64; triangle indices become Int64 connectivity into the concatenated points.

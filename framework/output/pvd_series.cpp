@@ -2,7 +2,7 @@
 // https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html
 #include "framework/output/pvd_series.h"
 
-#include "framework/checkpoint/state_stream.h"
+#include "framework/core/state_stream.h"
 
 #include <charconv>
 #include <cstddef>

@@ -1,6 +1,6 @@
 #include "framework/particles/particles.h"
 
-#include "framework/checkpoint/state_stream.h"
+#include "framework/core/state_stream.h"
 
 #include <algorithm>
 #include <cstring>

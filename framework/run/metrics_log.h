@@ -3,11 +3,11 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
-#include "framework/checkpoint/state_stream.h"
+#include "framework/core/state_stream.h"
+#include "framework/output/resumed_log.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -33,8 +33,7 @@ class MetricsLog {
   void restore_state(StateReader& in);
 
  private:
-  std::filesystem::path path_;
-  std::ofstream out_;
+  ResumableLog log_;
   std::vector<std::string> stages_;  // stage columns
 };
 
@@ -47,8 +46,7 @@ class ProbeLog {
   void restore_state(StateReader& in);
 
  private:
-  std::filesystem::path path_;
-  std::ofstream out_;
+  ResumableLog log_;
 };
 
 double kinetic_energy(const Particles& particles, const CpuExecutor& exec);

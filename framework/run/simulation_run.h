@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/output/mesh_vtp_writer.h"
+#include "framework/run/frame_writer.h"
 #include "framework/scene/scene.h"
 #include "framework/solver/registry.h"
 #include "framework/world/world.h"
@@ -28,12 +28,6 @@ struct CheckpointPolicy {
   double every = 0;        // s between checkpoints; 0: only when stopped (stop_requested)
   bool wall_clock = true;  // wall-clock seconds, else simulated seconds
 };
-
-// Meshes the liquid's surface for the "surface" output format: (particles, spacing, threads) ->
-// a closed mesh. upf_surface (framework/output/liquid_surface.h, OpenVDB) provides one; it is a
-// library of its own so that programs which never mesh surfaces do not load OpenVDB and the
-// threads its logging library starts at load time (which make fork() unsafe under ASan).
-using SurfaceMesher = std::function<MeshPiece(const Particles&, double, int)>;
 
 struct RunOptions {
   std::filesystem::path out_dir = "out";

@@ -10,20 +10,36 @@
 // The framework only calls this interface; coupling/ implements it with Bullet.
 #pragma once
 
-#include <filesystem>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "framework/core/mesh_piece.h"
 #include "framework/core/real.h"
-#include "framework/output/mesh_vtp_writer.h"
 
 namespace upf {
 
 class World;
 class StateWriter;
 class StateReader;
+
+// The state of one body, as a run reports it (bodies.csv) and tests read it.
+struct BodyState {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // frame origin (centre of mass if dynamic)
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // relative to the start
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d fluid_force = Eigen::Vector3d::Zero();   // N, the last step's
+  Eigen::Vector3d fluid_torque = Eigen::Vector3d::Zero();  // N m, about the frame origin
+};
+
+struct NamedBodyState {
+  std::string name;
+  BodyState state;
+};
 
 class BodySystem {
  public:
@@ -38,19 +54,16 @@ class BodySystem {
   // The largest step the bodies allow (fast bodies must not cross a particle per step).
   virtual double max_time_step(const World&) const { return std::numeric_limits<double>::max(); }
 
-  // The bodies' surfaces in their current pose, one piece per body, for a viewer stepping the
-  // world live; empty for a system without meshes.
+  // What the run writes and viewers draw (framework/run/body_outputs.h); the system itself
+  // writes nothing. Every body's state now, in a fixed order: the rows of bodies.csv.
+  virtual std::vector<NamedBodyState> body_states() const = 0;
+  // The bodies' surfaces in their current pose, one piece per body in body_states() order;
+  // empty for a system without meshes.
   virtual std::vector<MeshPiece> surface_meshes() const { return {}; }
 
-  // Outputs, called by the run: `open` once before the first frame; `write_frame` per frame
-  // returns the files it wrote (relative to out_dir) so they join the frame's .pvd entry.
-  virtual void open_outputs(const std::filesystem::path& out_dir, bool write_frames) = 0;
-  virtual std::vector<std::string> write_frame(const std::filesystem::path& out_dir, int frame,
-                                               double time) = 0;
-
-  // Checkpoints (World::save_state): the bodies' state and where their outputs stand. A restore
-  // happens after prepare() and open_outputs(), in a fresh world or in the one that saved (a run
-  // continues from exactly what it saved, as a resumed run does).
+  // Checkpoints (World::save_state): the bodies' state. A restore happens after prepare(), in a
+  // fresh world or in the one that saved (a run continues from exactly what it saved, as a
+  // resumed run does).
   virtual void save_state(StateWriter&) const {}
   virtual void restore_state(StateReader&) {}
 };

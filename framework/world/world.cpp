@@ -1,6 +1,6 @@
 #include "framework/world/world.h"
 
-#include "framework/checkpoint/state_stream.h"
+#include "framework/core/state_stream.h"
 
 #include <algorithm>
 #include <cmath>
@@ -192,10 +192,10 @@ struct BrokenParticle {
 void World::check_stability() const {
   // The first bad particle in id order, so the report is the same for any thread count.
   const std::size_t n = particles_.size();
-  const std::size_t bad = executor_.first_by_id(
-      n, particles_.id.data(),
-      BrokenParticle{particles_.position.data(), particles_.velocity.data(),
-                     settings_.max_speed * settings_.max_speed});
+  const std::size_t bad =
+      executor_.first_by_id(n, particles_.id.data(),
+                            BrokenParticle{particles_.position.data(), particles_.velocity.data(),
+                                           settings_.max_speed * settings_.max_speed});
   if (bad == n) return;
   const Vec3& x = particles_.position[bad];
   const Vec3& v = particles_.velocity[bad];

@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "framework/checkpoint/state_stream.h"
+#include "framework/core/state_stream.h"
 #include "framework/core/vec3.h"
 #include "framework/executors/cpu/cpu_executor.h"
 #include "framework/neighbours/neighbour_list.h"
@@ -87,9 +87,9 @@ class DemContactList {
   std::size_t size() const { return partner_.size(); }
   // The view the DEM's stages hold.
   DemContactView view() {
-    return {offsets_.data(),        partner_.data(),         xi_.data(),
-            force_.data(),          partner_torque_.data(),  partner_rolling_.data(),
-            touching_.data(),       reverse_offsets_.data(), reverse_.data()};
+    return {offsets_.data(),  partner_.data(),         xi_.data(),
+            force_.data(),    partner_torque_.data(),  partner_rolling_.data(),
+            touching_.data(), reverse_offsets_.data(), reverse_.data()};
   }
 
   // Checkpoints: the springs and whose they are (the candidates are listed again next step).

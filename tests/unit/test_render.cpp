@@ -88,9 +88,12 @@ class FixedMeshes : public BodySystem {
   void prepare(World&) override {}
   void place_particles(World&, double) override {}
   void advance(World&, double) override {}
+  std::vector<NamedBodyState> body_states() const override {
+    std::vector<NamedBodyState> states;
+    for (const auto& piece : pieces_) states.push_back({piece.name, {}});
+    return states;
+  }
   std::vector<MeshPiece> surface_meshes() const override { return pieces_; }
-  void open_outputs(const fs::path&, bool) override {}
-  std::vector<std::string> write_frame(const fs::path&, int, double) override { return {}; }
 
  private:
   std::vector<MeshPiece> pieces_;

@@ -1,6 +1,7 @@
-// The state of a run as a flat byte stream, for checkpoints (checkpoint_file.h). Components write
-// their state in a fixed order, each part under a named section; the reader checks every section
-// name and every length against what is left, so a truncated, corrupted or mismatched stream is
+// The state of a world or a run as a flat byte stream in memory, for checkpoints (written to disk
+// by framework/checkpoint/checkpoint_file.h). Components write their state in a fixed order, each
+// part under a named section; the reader checks every section name and every length against
+// what is left, so a truncated, corrupted or mismatched stream is
 // an InputError that names the checkpoint file and the section, never a crash or a silent wrong
 // start. Values are stored in the machine's own representation: checkpoints move between runs
 // of one build, not between architectures.

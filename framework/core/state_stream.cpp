@@ -1,4 +1,4 @@
-#include "framework/checkpoint/state_stream.h"
+#include "framework/core/state_stream.h"
 
 #include "framework/core/errors.h"
 

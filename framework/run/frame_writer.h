@@ -1,0 +1,56 @@
+// A run's frames: frames/frame_NNNNN.vtp (and .ply point clouds, liquid surface meshes) at every
+// frame time, the bodies' files (body_outputs.h), and particles.pvd, the series ParaView opens.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "framework/core/mesh_piece.h"
+#include "framework/output/pvd_series.h"
+#include "framework/run/body_outputs.h"
+#include "framework/scene/scene.h"
+#include "framework/world/world.h"
+
+namespace upf {
+
+// Meshes the liquid's surface for the "surface" output format: (particles, spacing, threads) ->
+// a closed mesh. upf_surface (framework/output/liquid_surface.h, OpenVDB) provides one; it is a
+// library of its own so that programs which never mesh surfaces do not load OpenVDB and the
+// threads its logging library starts at load time (which make fork() unsafe under ASan).
+using SurfaceMesher = std::function<MeshPiece(const Particles&, double, int)>;
+
+class FrameWriter {
+ public:
+  // `enabled` false writes no frame files (bodies.csv still). A scene asking for surfaces
+  // without a `surface_mesher` is an InputError at /output/formats. `resuming`: the logs wait
+  // for restore_state.
+  FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
+              std::vector<std::string> fields, bool enabled, const World& world,
+              SurfaceMesher surface_mesher, bool resuming);
+
+  // Writes the frame of `particles` at `time`: the world's state, or its last good state.
+  void write(const Particles& particles, double time);
+  int frames() const { return frames_; }
+  void save_state(StateWriter& out);
+  void restore_state(StateReader& in);
+
+ private:
+  // frames/surface_NNNNN.ply for renderers and .vtp for ParaView; returns the .vtp's name.
+  std::string write_surface(const Particles& particles) const;
+
+  std::filesystem::path out_dir_;
+  std::vector<std::string> fields_;
+  bool vtp_;      // .vtp frames and the .pvd
+  bool ply_;      // .ply point clouds
+  bool surface_;  // liquid surface meshes: .ply, and .vtp in the .pvd
+  double spacing_;
+  PvdSeries series_;
+  const World& world_;
+  SurfaceMesher surface_mesher_;
+  BodyOutputs bodies_;
+  int frames_ = 0;
+};
+
+}  // namespace upf
