@@ -28,6 +28,8 @@ class JsonInput {
   void problem(const std::string& path, const std::string& message) {
     problems_.push_back({path, message});
   }
+  // No problem found so far.
+  bool clean() const { return problems_.empty(); }
   static std::string child(const std::string& path, std::string_view key) {
     return path + "/" + std::string(key);
   }

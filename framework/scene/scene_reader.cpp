@@ -226,35 +226,8 @@ double available_memory_bytes() {
   return pages > 0 && page > 0 ? double(pages) * double(page) : 1e18;
 }
 
-}  // namespace
-
-SceneDescription read_scene(const json& doc, const Registry& registry, const std::string& source) {
-  std::vector<InputProblem> problems;
-  JsonInput in(problems);
-  SceneDescription scene;
-  scene.source = source;
-  auto fail_if_any = [&] {
-    if (problems.empty()) return;
-    for (auto& p : problems) p.where = source + ":" + (p.where.empty() ? "/" : p.where);
-    throw InputError(std::move(problems));
-  };
-  if (!in.expect_object(doc, "")) fail_if_any();
-  std::vector<std::string> top_keys = kTopKeys;
-  for (const auto& section : registry.scene_sections()) top_keys.push_back(section.key);
-  in.check_keys(doc, "", top_keys);
-
-  scene.name =
-      in.string(doc, "", "name", false).value_or(std::filesystem::path(source).stem().string());
-  in.string(doc, "", "description", false);
-  if (auto g = in.vec3(doc, "", "gravity", false)) {
-    scene.world.gravity = {Real((*g)[0]), Real((*g)[1]), Real((*g)[2])};
-  }
-  WorldSettings& w = scene.world;
-  const auto spacing = in.required_number(doc, "", "particle_spacing", 0, 100, true, "m");
-  if (spacing) w.spacing = Real(*spacing);
-  const double h = spacing.value_or(1.0);
-
-  // Time, stability and neighbours: numbers checked against their specs.
+// /time, /stability and /neighbours: numbers checked against their specs.
+void read_world_settings(JsonInput& in, const json& doc, WorldSettings& w) {
   if (auto it = doc.find("time"); it != doc.end() && in.expect_object(*it, "/time")) {
     const auto specs = time_setting_specs();
     in.check_keys(*it, "/time", spec_names(specs));
@@ -280,8 +253,11 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
     w.reorder_every =
         int(in.number(*it, "/neighbours", spec_named(specs, "reorder_every"), w.reorder_every));
   }
+}
 
-  // Materials.
+// /materials, each with its kind's and its solver's parameters.
+void read_materials(JsonInput& in, const json& doc, const Registry& registry,
+                    SceneDescription& scene) {
   if (auto it = doc.find("materials"); it == doc.end()) {
     in.problem("/materials", "missing (an object of named materials is required)");
   } else if (in.expect_object(*it, "/materials")) {
@@ -299,8 +275,10 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
                    "parameters of solver '" + ma.solver + "' differ from those of material '" +
                        mb.name + "'; materials sharing a solver must share its parameters");
     }
+}
 
-  // Containers.
+// /containers: boxes of frozen wall particles.
+void read_containers(JsonInput& in, const json& doc, double h, SceneDescription& scene) {
   in.for_each_object(doc, "", "containers", [&](const json& c, const std::string& path) {
     in.check_keys(c, path, {"material", "min", "max", "layers"});
     ContainerDesc desc;
@@ -313,8 +291,10 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
     if (box) desc.box = *box;
     if (mat && box) scene.containers.push_back(desc);
   });
+}
 
-  // Fluid blocks: each must sit inside a container.
+// /fluid_blocks: each must sit inside a container.
+void read_fluid_blocks(JsonInput& in, const json& doc, double h, SceneDescription& scene) {
   in.for_each_object(doc, "", "fluid_blocks", [&](const json& b, const std::string& path) {
     in.check_keys(b, path, {"material", "min", "max", "velocity"});
     FluidBlockDesc desc;
@@ -337,98 +317,142 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
     }
     if (mat_ok) scene.fluid_blocks.push_back(desc);
   });
+}
 
-  // Output.
-  if (auto it = doc.find("output"); it != doc.end() && in.expect_object(*it, "/output")) {
-    const auto specs = output_setting_specs();
-    std::vector<std::string> keys = spec_names(specs);
-    keys.insert(keys.end(), {"fields", "formats"});
-    in.check_keys(*it, "/output", keys);
-    scene.output.fps = in.number(*it, "/output", spec_named(specs, "fps"), scene.output.fps);
-    // Field names only: which fields exist is known once the solvers have created theirs, so
-    // the run checks the names (check_output_fields in framework/run).
-    if (auto f = it->find("fields"); f != it->end()) {
-      scene.output.fields.emplace();
-      if (!f->is_array()) {
-        in.problem("/output/fields", "expected an array of field names");
-      } else {
-        for (std::size_t i = 0; i < f->size(); ++i) {
-          const std::string path = JsonInput::child("/output/fields", i);
-          const json& name = (*f)[i];
-          const bool empty = name.is_string() && name.get<std::string>().empty();
-          if (!name.is_string() || empty) {
-            in.problem(path, "expected a field name, found " +
-                                 (empty ? std::string("an empty string") : json_type_name(name)));
-            continue;
-          }
-          scene.output.fields->push_back(name.get<std::string>());
-        }
+// /output/fields: names only. Which fields exist is known once the solvers have created theirs,
+// so the run checks the names (check_output_fields in framework/run).
+void read_output_fields(JsonInput& in, const json& f, OutputDesc& output) {
+  output.fields.emplace();
+  if (!f.is_array()) {
+    in.problem("/output/fields", "expected an array of field names");
+    return;
+  }
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const std::string path = JsonInput::child("/output/fields", i);
+    const json& name = f[i];
+    const bool empty = name.is_string() && name.get<std::string>().empty();
+    if (!name.is_string() || empty) {
+      in.problem(path, "expected a field name, found " +
+                           (empty ? std::string("an empty string") : json_type_name(name)));
+      continue;
+    }
+    output.fields->push_back(name.get<std::string>());
+  }
+}
+
+// /output/formats: the formats named, and no others.
+void read_output_formats(JsonInput& in, const json& f, OutputDesc& output) {
+  output.vtp = false;
+  if (!f.is_array()) {
+    in.problem("/output/formats", "expected an array of format names");
+    return;
+  }
+  // Each format name and the flag it sets; an unknown name gets them all listed.
+  const std::pair<const char*, bool OutputDesc::*> known[] = {
+      {"vtp", &OutputDesc::vtp},
+      {"ply", &OutputDesc::ply},
+      {"surface", &OutputDesc::surface},
+  };
+  std::string known_list;
+  for (const auto& [format, flag] : known)
+    known_list += (known_list.empty() ? "\"" : ", \"") + std::string(format) + "\"";
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const json& name = f[i];
+    bool found = false;
+    for (const auto& [format, flag] : known) {
+      if (name.is_string() && name.get<std::string>() == format) {
+        output.*flag = true;
+        found = true;
       }
     }
-    if (auto f = it->find("formats"); f != it->end()) {
-      scene.output.vtp = false;
-      if (!f->is_array()) {
-        in.problem("/output/formats", "expected an array of format names");
-      } else {
-        // Each format name and the flag it sets; an unknown name gets them all listed.
-        const std::pair<const char*, bool OutputDesc::*> known[] = {
-            {"vtp", &OutputDesc::vtp},
-            {"ply", &OutputDesc::ply},
-            {"surface", &OutputDesc::surface},
-        };
-        std::string known_list;
-        for (const auto& [format, flag] : known)
-          known_list += (known_list.empty() ? "\"" : ", \"") + std::string(format) + "\"";
-        for (std::size_t i = 0; i < f->size(); ++i) {
-          const json& name = (*f)[i];
-          bool found = false;
-          for (const auto& [format, flag] : known) {
-            if (name.is_string() && name.get<std::string>() == format) {
-              scene.output.*flag = true;
-              found = true;
-            }
-          }
-          if (!found) {
-            in.problem(JsonInput::child("/output/formats", i),
-                       "unknown format " + name.dump() + " (known: " + known_list + ")");
-          }
-        }
-      }
+    if (!found) {
+      in.problem(JsonInput::child("/output/formats", i),
+                 "unknown format " + name.dump() + " (known: " + known_list + ")");
     }
   }
+}
 
-  // Plug-in sections ("bodies"), once materials, spacing and containers are known.
+// /output: frame rate, field names and formats.
+void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
+  auto it = doc.find("output");
+  if (it == doc.end() || !in.expect_object(*it, "/output")) return;
+  const auto specs = output_setting_specs();
+  std::vector<std::string> keys = spec_names(specs);
+  keys.insert(keys.end(), {"fields", "formats"});
+  in.check_keys(*it, "/output", keys);
+  scene.output.fps = in.number(*it, "/output", spec_named(specs, "fps"), scene.output.fps);
+  if (auto f = it->find("fields"); f != it->end()) read_output_fields(in, *f, scene.output);
+  if (auto f = it->find("formats"); f != it->end()) read_output_formats(in, *f, scene.output);
+}
+
+// Plug-in sections ("bodies"), once materials, spacing and containers are known; something must
+// move: liquid, or what a plug-in section adds (grains, bodies).
+void read_sections(JsonInput& in, const json& doc, const Registry& registry,
+                   SceneDescription& scene) {
   for (const auto& section : registry.scene_sections()) {
     auto it = doc.find(section.key);
     if (it == doc.end()) continue;
     auto data = section.read(*it, "/" + section.key, scene, in);
     if (data) scene.sections.push_back({section.key, std::move(data)});
   }
-  // Something must move: liquid, or what a plug-in section adds (grains, bodies).
   bool moving_sections = false;
   for (const auto& section : scene.sections)
     moving_sections = moving_sections || section.data->estimated_particles() > 0;
-  if (scene.fluid_blocks.empty() && !moving_sections && problems.empty())
+  if (scene.fluid_blocks.empty() && !moving_sections && in.clean())
     in.problem("/fluid_blocks", "the scene has no fluid block: nothing would move");
+}
 
-  // Probes.
+// Memory: estimated before anything is allocated.
+void check_memory(JsonInput& in, const SceneDescription& scene) {
+  const double particles = scene.estimated_particles();
+  const double needed = particles * kEstimatedBytesPerParticle;
+  const double available = available_memory_bytes();
+  if (particles > 4.0e9 || needed > available) {
+    std::ostringstream msg;
+    msg << "the scene would create about " << particles << " particles, needing about "
+        << needed / double(1 << 30) << " GiB; this machine has " << available / double(1 << 30)
+        << " GiB available. Increase the spacing or shrink the blocks";
+    in.problem("/particle_spacing", msg.str());
+  }
+}
+
+}  // namespace
+
+SceneDescription read_scene(const json& doc, const Registry& registry, const std::string& source) {
+  std::vector<InputProblem> problems;
+  JsonInput in(problems);
+  SceneDescription scene;
+  scene.source = source;
+  auto fail_if_any = [&] {
+    if (problems.empty()) return;
+    for (auto& p : problems) p.where = source + ":" + (p.where.empty() ? "/" : p.where);
+    throw InputError(std::move(problems));
+  };
+  if (!in.expect_object(doc, "")) fail_if_any();
+  std::vector<std::string> top_keys = kTopKeys;
+  for (const auto& section : registry.scene_sections()) top_keys.push_back(section.key);
+  in.check_keys(doc, "", top_keys);
+
+  scene.name =
+      in.string(doc, "", "name", false).value_or(std::filesystem::path(source).stem().string());
+  in.string(doc, "", "description", false);
+  if (auto g = in.vec3(doc, "", "gravity", false)) {
+    scene.world.gravity = {Real((*g)[0]), Real((*g)[1]), Real((*g)[2])};
+  }
+  const auto spacing = in.required_number(doc, "", "particle_spacing", 0, 100, true, "m");
+  if (spacing) scene.world.spacing = Real(*spacing);
+  const double h = spacing.value_or(1.0);
+
+  read_world_settings(in, doc, scene.world);
+  read_materials(in, doc, registry, scene);
+  read_containers(in, doc, h, scene);
+  read_fluid_blocks(in, doc, h, scene);
+  read_output(in, doc, scene);
+  read_sections(in, doc, registry, scene);
   in.for_each_object(doc, "", "probes", [&](const json& probe, const std::string& path) {
     read_probe(in, probe, path, h, scene);
   });
-
-  // Memory: estimated before anything is allocated.
-  if (problems.empty()) {
-    const double particles = scene.estimated_particles();
-    const double needed = particles * kEstimatedBytesPerParticle;
-    const double available = available_memory_bytes();
-    if (particles > 4.0e9 || needed > available) {
-      std::ostringstream msg;
-      msg << "the scene would create about " << particles << " particles, needing about "
-          << needed / double(1 << 30) << " GiB; this machine has " << available / double(1 << 30)
-          << " GiB available. Increase the spacing or shrink the blocks";
-      in.problem("/particle_spacing", msg.str());
-    }
-  }
+  if (in.clean()) check_memory(in, scene);
   fail_if_any();
   return scene;
 }
