@@ -11,40 +11,47 @@
 
 namespace upf::pbf {
 
-std::vector<ParamSpec> PbfSolver::param_specs() {
-  return {
-      {"iterations", "1", 4, 1, 1000,
-       "density-constraint iterations per step (the paper's solverIterations; it uses 2-4)", true},
-      {"relaxation", "1", 1e-3, 0, 100,
-       "epsilon of lambda's denominator (constraint force mixing), as a fraction of a full "
-       "neighbourhood's denominator: softens the constraint where neighbours are few"},
-      {"tensile_k", "1", 0.1, 0, 10,
-       "k of the artificial pressure s_corr = -k (W(r)/W(dq))^n, as the lambda of a density "
-       "error of k in a full neighbourhood; 0 switches it off"},
-      {"tensile_n", "1", 4, 1, 16, "exponent n of the artificial pressure", true},
-      {"tensile_dq", "1", 0.2, 0.01, 0.99,
-       "dq / H of the artificial pressure (the distance where s_corr = -k)"},
-      {"xsph", "1", 0.01, 0, 1,
-       "XSPH viscosity c: each step blends c of the neighbours' kernel-weighted velocity in"},
-      {"vorticity", "m/s", 0, 0, 100,
-       "vorticity confinement epsilon: feeds back rotation lost to damping; 0 switches it off"},
-      {"unilateral", "1", 1, 0, 1,
-       "1: correct compression only, C = max(rho/rho0 - 1, 0); 0: the paper's two-sided "
-       "constraint, which also pulls particles together and needs relaxation >= 1 to stay "
-       "stable at the free surface",
-       true},
-  };
+ParamBinding<PbfParams> PbfSolver::param_binding() {
+  ParamBinding<PbfParams> b;
+  b.add({"iterations", "1", 4, 1, 1000,
+         "density-constraint iterations per step (the paper's solverIterations; it uses 2-4)"},
+        &PbfParams::iterations);
+  b.add({"relaxation", "1", 1e-3, 0, 100,
+         "epsilon of lambda's denominator (constraint force mixing), as a fraction of a full "
+         "neighbourhood's denominator: softens the constraint where neighbours are few"},
+        &PbfParams::relaxation);
+  b.add({"tensile_k", "1", 0.1, 0, 10,
+         "k of the artificial pressure s_corr = -k (W(r)/W(dq))^n, as the lambda of a density "
+         "error of k in a full neighbourhood; 0 switches it off"},
+        &PbfParams::tensile_k);
+  b.add({"tensile_n", "1", 4, 1, 16, "exponent n of the artificial pressure"},
+        &PbfParams::tensile_n);
+  b.add({"tensile_dq", "1", 0.2, 0.01, 0.99,
+         "dq / H of the artificial pressure (the distance where s_corr = -k)"},
+        &PbfParams::tensile_dq);
+  b.add({"xsph", "1", 0.01, 0, 1,
+         "XSPH viscosity c: each step blends c of the neighbours' kernel-weighted velocity in"},
+        &PbfParams::xsph);
+  b.add({"vorticity", "m/s", 0, 0, 100,
+         "vorticity confinement epsilon: feeds back rotation lost to damping; 0 switches it off"},
+        &PbfParams::vorticity);
+  b.add({"unilateral", "1", 1, 0, 1,
+         "1: correct compression only, C = max(rho/rho0 - 1, 0); 0: the paper's two-sided "
+         "constraint, which also pulls particles together and needs relaxation >= 1 to stay "
+         "stable at the free surface"},
+        &PbfParams::unilateral);
+  return b;
 }
 
-PbfSolver::PbfSolver(const ParamValues& params, std::vector<MaterialId> materials)
-    : iterations_(int(params.get("iterations"))),
-      relaxation_(params.get("relaxation")),
-      tensile_k_(params.get("tensile_k")),
-      tensile_dq_(params.get("tensile_dq")),
-      xsph_(params.get("xsph")),
-      vorticity_(params.get("vorticity")),
-      tensile_n_(int(params.get("tensile_n"))),
-      unilateral_(params.get("unilateral") != 0),
+PbfSolver::PbfSolver(const PbfParams& params, std::vector<MaterialId> materials)
+    : iterations_(params.iterations),
+      relaxation_(params.relaxation),
+      tensile_k_(params.tensile_k),
+      tensile_dq_(params.tensile_dq),
+      xsph_(params.xsph),
+      vorticity_(params.vorticity),
+      tensile_n_(params.tensile_n),
+      unilateral_(params.unilateral),
       materials_(std::move(materials)) {}
 
 double PbfSolver::template_denominator(Real spacing, const CubicSplineKernel& kernel) {
@@ -102,9 +109,9 @@ void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
   fluid_.shared_forces(world, f, density);
   // Particles this solver does not move at their velocity, the owned ones under the forces.
   fluid_.predict_unowned(world, f, xs, dt);
-  world.executor().run(fluid_.owned.range(),
-                       PbfPredictStage{f, fluid_.other_acceleration.data(), dt,
-                                       p[fields_.displacement].data(), xs});
+  world.executor().run(
+      fluid_.owned.range(),
+      PbfPredictStage{f, fluid_.other_acceleration.data(), dt, p[fields_.displacement].data(), xs});
   // The shared viscosity's reaction on bodies (no pressure term: the corrections add theirs).
   fluid_.add_reactions(world, f, density, NoPressureFactor{});
 }
@@ -164,8 +171,7 @@ void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
   Vec3* omega = p[fields_.vorticity].data();
 
   exec.run(mine, PbfTakePredictionStage{p[fields_.predicted_position].data(),
-                                        p[fields_.displacement].data(), dt,
-                                        p.position.data(), v});
+                                        p[fields_.displacement].data(), dt, p.position.data(), v});
   // f views the particle arrays, so from here on it sees the new positions and velocities.
   // XSPH and confinement read the neighbours' new velocities: results go to a scratch field
   // first so that no particle reads a velocity already smoothed this step.
@@ -175,7 +181,9 @@ void PbfSolver::update_velocities(World& world, const FluidView& f, Real dt) {
   exec.run(mine, CopyVectorStage{v_new, v});
 }
 
-std::vector<std::string> PbfSolver::stages() const { return {"predict", "constraints", "velocity"}; }
+std::vector<std::string> PbfSolver::stages() const {
+  return {"predict", "constraints", "velocity"};
+}
 
 void PbfSolver::step(World& world, Real dt, StageRunner& run) {
   FluidView f;

@@ -43,7 +43,7 @@
 //
 // Units: masses are real (m = rho0 h^3), so the paper's epsilon and k are made dimensionless
 // here, relative to the denominator of eq. 11 for a particle with a full neighbourhood on the
-// initial lattice (see param_specs()). Only compression is corrected by default (unilateral):
+// initial lattice (see param_binding()). Only compression is corrected by default (unilateral):
 // with the bilateral constraint of the paper, particles at the free surface, which lack
 // neighbours, pull towards the liquid and clump (SPlisHSPlasH's PBF clamps in the same way).
 #pragma once
@@ -51,16 +51,23 @@
 #include <cstdint>
 #include <vector>
 
-#include "framework/params/param_spec.h"
+#include "framework/params/param_binding.h"
 #include "framework/solver/solver.h"
 #include "pbf_kernels.h"
 #include "solvers/fluid/fluid_solver_state.h"
 
 namespace upf::pbf {
 
+struct PbfParams {
+  int iterations = 0;
+  double relaxation = 0, tensile_k = 0, tensile_dq = 0, xsph = 0, vorticity = 0;
+  int tensile_n = 0;
+  bool unilateral = true;
+};
+
 class PbfSolver final : public Solver {
  public:
-  PbfSolver(const ParamValues& params, std::vector<MaterialId> materials);
+  PbfSolver(const PbfParams& params, std::vector<MaterialId> materials);
 
   std::string_view name() const override { return "pbf"; }
   void prepare(World& world) override;
@@ -69,7 +76,7 @@ class PbfSolver final : public Solver {
   void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
 
-  static std::vector<ParamSpec> param_specs();
+  static ParamBinding<PbfParams> param_binding();
   // The denominator of eq. 11 for a particle with a full neighbourhood on a cubic lattice of
   // `spacing` with volumes spacing^3: the unit in which `relaxation` and `tensile_k` are given.
   static double template_denominator(Real spacing, const CubicSplineKernel& kernel);

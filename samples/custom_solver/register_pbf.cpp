@@ -1,8 +1,8 @@
 #include "register_pbf.h"
 
 #include "framework/solver/registry.h"
-#include "solvers/fluid/fluid_solver_state.h"
 #include "pbf_solver.h"
+#include "solvers/fluid/fluid_solver_state.h"
 
 namespace upf::pbf {
 
@@ -14,9 +14,10 @@ void register_pbf(Registry& registry) {
       "step, with artificial pressure, XSPH and vorticity confinement (a sample solver "
       "registered from samples/custom_solver)",
       "Macklin & Müller 2013, Position Based Fluids, ACM TOG 32(4)",
-      PbfSolver::param_specs(),
+      PbfSolver::param_binding().specs(),
       [](const ParamValues& values, std::vector<MaterialId> materials) {
-        return std::make_unique<PbfSolver>(values, std::move(materials));
+        return std::make_unique<PbfSolver>(PbfSolver::param_binding().bind(values),
+                                           std::move(materials));
       },
       fluid_solver_coupling(),
   });

@@ -20,18 +20,17 @@ constexpr Real kSkinPerSpacing = Real(0.2);
 
 }  // namespace
 
-std::vector<ParamSpec> DemSolver::param_specs() {
-  return {
-      {"substep_fraction", "1", 0.05, 1e-4, 0.5,
-       "DEM sub-step as a fraction of the shortest contact time (linear: the contact time; "
-       "Hertz: the Rayleigh time)"},
-  };
+ParamBinding<DemParams> DemSolver::param_binding() {
+  ParamBinding<DemParams> b;
+  b.add({"substep_fraction", "1", 0.05, 1e-4, 0.5,
+         "DEM sub-step as a fraction of the shortest contact time (linear: the contact time; "
+         "Hertz: the Rayleigh time)"},
+        &DemParams::substep_fraction);
+  return b;
 }
 
-DemSolver::DemSolver(DemModel model, const ParamValues& params, std::vector<MaterialId> materials)
-    : model_(model),
-      substep_fraction_(params.get("substep_fraction")),
-      materials_(std::move(materials)) {}
+DemSolver::DemSolver(DemModel model, const DemParams& params, std::vector<MaterialId> materials)
+    : model_(model), substep_fraction_(params.substep_fraction), materials_(std::move(materials)) {}
 
 void DemSolver::prepare(World& world) {
   Particles& p = world.particles();
@@ -88,7 +87,9 @@ Real DemSolver::max_time_step(const World& world) const {
   return Real(0.5) * skin_ / fastest;
 }
 
-std::vector<std::string> DemSolver::stages() const { return {"dem_contacts", "dem_integration"}; }
+std::vector<std::string> DemSolver::stages() const {
+  return {"dem_contacts", "dem_integration"};
+}
 
 void DemSolver::step(World& world, Real dt, StageRunner& run) {
   stats_ = SolverStats{};
@@ -154,9 +155,8 @@ void DemSolver::interpolate_fluid(World& world) {
       DemFluidStateStage{view_of(world.neighbours(grain_liquid_list_)),
                          view_of(world.neighbours(grain_voidage_list_)), world.kernel(),
                          p.position.data(), p.velocity.data(), p.mass.data(), p.type.data(),
-                         p.material.data(), p[radius_].data(),
-                         liquid_density_.data(), liquid_viscosity_.data(),
-                         fluid_weight_sum_.data(), fluid_.data()});
+                         p.material.data(), p[radius_].data(), liquid_density_.data(),
+                         liquid_viscosity_.data(), fluid_weight_sum_.data(), fluid_.data()});
 }
 
 void DemSolver::liquid_reactions(World& world) {
@@ -174,32 +174,18 @@ void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) 
   Particles& p = world.particles();
   world.executor().run(
       owned_.range(),
-      DemForcesStage{model_,
-                     contacts_.view(),
-                     pairs_->table(),
-                     p.position.data(),
-                     p.velocity.data(),
-                     p[angular_velocity_].data(),
-                     p.mass.data(),
-                     p[radius_].data(),
-                     p.type.data(),
-                     p.material.data(),
-                     world.containers().data(),
-                     world.settings().gravity,
-                     h_,
-                     t_in_step,
-                     fluid_.empty() ? nullptr : fluid_.data(),
-                     fluid_weight,
-                     fluid_force_.data(),
-                     p[force_].data(),
-                     p[torque_].data()});
+      DemForcesStage{model_, contacts_.view(), pairs_->table(), p.position.data(),
+                     p.velocity.data(), p[angular_velocity_].data(), p.mass.data(),
+                     p[radius_].data(), p.type.data(), p.material.data(), world.containers().data(),
+                     world.settings().gravity, h_, t_in_step,
+                     fluid_.empty() ? nullptr : fluid_.data(), fluid_weight, fluid_force_.data(),
+                     p[force_].data(), p[torque_].data()});
 }
 
 void DemSolver::gather_pairs(World& world) {
   Particles& p = world.particles();
   world.executor().run(owned_.range(),
-                       DemGatherPairsStage{contacts_.view(), p[force_].data(),
-                                           p[torque_].data()});
+                       DemGatherPairsStage{contacts_.view(), p[force_].data(), p[torque_].data()});
 }
 
 void DemSolver::substep_reactions(World& world, Real weight) {
@@ -211,12 +197,10 @@ void DemSolver::substep_reactions(World& world, Real weight) {
 
 void DemSolver::kick_drift(World& world, Real h_kick, Real h_drift) {
   Particles& p = world.particles();
-  world.executor().run(
-      owned_.range(),
-      DemKickDriftStage{p[force_].data(), p[torque_].data(),
-                        p.mass.data(), p[radius_].data(), h_kick, h_drift,
-                        p.position.data(), p.velocity.data(),
-                        p[angular_velocity_].data()});
+  world.executor().run(owned_.range(),
+                       DemKickDriftStage{p[force_].data(), p[torque_].data(), p.mass.data(),
+                                         p[radius_].data(), h_kick, h_drift, p.position.data(),
+                                         p.velocity.data(), p[angular_velocity_].data()});
 }
 
 }  // namespace upf

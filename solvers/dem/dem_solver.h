@@ -11,7 +11,8 @@
 //
 // Grains in a liquid feel drag (Di Felice 1994) and buoyancy (dem_fluid_drag.h) from the liquid
 // interpolated around them at the step's start; the liquid neighbours gather the opposite force,
-// averaged over the sub-steps, through the coupling array CouplingArray::LiquidForce, so momentum is conserved.
+// averaged over the sub-steps, through the coupling array CouplingArray::LiquidForce, so momentum
+// is conserved.
 //
 // Determinism: each pair of grains is computed once, by the grain with the lower id, which holds
 // the pair and its spring (dem_contact_list.h); in a second pass the other grain gathers the
@@ -23,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/params/param_spec.h"
+#include "framework/params/param_binding.h"
 #include "framework/solver/solver.h"
 #include "solvers/dem/dem_contact.h"
 #include "solvers/dem/dem_contact_list.h"
@@ -38,10 +39,14 @@ inline constexpr const char* kRadiusField = "radius";
 inline constexpr const char* kForceField = "dem.force";    // N, on each grain, last sub-step
 inline constexpr const char* kTorqueField = "dem.torque";  // N m
 
+struct DemParams {
+  double substep_fraction = 0;  // of the shortest contact time
+};
+
 class DemSolver : public Solver {
  public:
-  static std::vector<ParamSpec> param_specs();
-  DemSolver(DemModel model, const ParamValues& params, std::vector<MaterialId> materials);
+  static ParamBinding<DemParams> param_binding();
+  DemSolver(DemModel model, const DemParams& params, std::vector<MaterialId> materials);
 
   std::string_view name() const override {
     return model_ == DemModel::Linear ? "dem_linear" : "dem_hertz";

@@ -14,9 +14,10 @@ void register_dem(Registry& registry) {
       "a tangential spring with Coulomb's limit, rolling resistance and optional cohesion",
       "Cundall & Strack 1979, A discrete numerical model for granular assemblies, Geotechnique "
       "29(1)",
-      DemSolver::param_specs(),
+      DemSolver::param_binding().specs(),
       [](const ParamValues& values, std::vector<MaterialId> materials) {
-        return std::make_unique<DemSolver>(DemModel::Linear, values, std::move(materials));
+        return std::make_unique<DemSolver>(
+            DemModel::Linear, DemSolver::param_binding().bind(values), std::move(materials));
       },
       // Reactions on bodies and the drag and buoyancy's reaction on the liquid.
       {{CouplingArray::BoundaryForce, CouplingArray::LiquidForce}, {}, {}},
@@ -28,9 +29,10 @@ void register_dem(Registry& registry) {
       "tangential stiffness, damping from the restitution), Coulomb's limit, rolling resistance",
       "Tsuji, Tanaka & Ishida 1992, Lagrangian numerical simulation of plug flow of "
       "cohesionless particles in a horizontal pipe, Powder Technol. 71",
-      DemSolver::param_specs(),
+      DemSolver::param_binding().specs(),
       [](const ParamValues& values, std::vector<MaterialId> materials) {
-        return std::make_unique<DemSolver>(DemModel::Hertz, values, std::move(materials));
+        return std::make_unique<DemSolver>(DemModel::Hertz, DemSolver::param_binding().bind(values),
+                                           std::move(materials));
       },
       // Reactions on bodies and the drag and buoyancy's reaction on the liquid.
       {{CouplingArray::BoundaryForce, CouplingArray::LiquidForce}, {}, {}},

@@ -12,23 +12,25 @@
 
 namespace upf {
 
-std::vector<ParamSpec> PcisphSolver::param_specs() {
-  return {
-      {"eta", "1", 0.01, 1e-6, 0.5,
-       "target average compression (rho - rho0)/rho0: the correction loop ends once the average "
-       "falls below it"},
-      {"min_iterations", "1", 3, 1, 1000, "correction iterations always done", true},
-      {"max_iterations", "1", 100, 1, 10000,
-       "correction iterations at most; not checked against min_iterations: if min_iterations > "
-       "max_iterations, the loop stops at max_iterations",
-       true},
-  };
+ParamBinding<PcisphParams> PcisphSolver::param_binding() {
+  ParamBinding<PcisphParams> b;
+  b.add({"eta", "1", 0.01, 1e-6, 0.5,
+         "target average compression (rho - rho0)/rho0: the correction loop ends once the "
+         "average falls below it"},
+        &PcisphParams::eta);
+  b.add({"min_iterations", "1", 3, 1, 1000, "correction iterations always done"},
+        &PcisphParams::min_iterations);
+  b.add({"max_iterations", "1", 100, 1, 10000,
+         "correction iterations at most; not checked against min_iterations: if min_iterations "
+         "> max_iterations, the loop stops at max_iterations"},
+        &PcisphParams::max_iterations);
+  return b;
 }
 
-PcisphSolver::PcisphSolver(const ParamValues& params, std::vector<MaterialId> materials)
-    : eta_(params.get("eta")),
-      min_iterations_(int(params.get("min_iterations"))),
-      max_iterations_(int(params.get("max_iterations"))),
+PcisphSolver::PcisphSolver(const PcisphParams& params, std::vector<MaterialId> materials)
+    : eta_(params.eta),
+      min_iterations_(params.min_iterations),
+      max_iterations_(params.max_iterations),
       materials_(std::move(materials)) {}
 
 double PcisphSolver::template_delta_scale(Real spacing, const CubicSplineKernel& kernel) {

@@ -14,15 +14,20 @@
 
 #include <vector>
 
-#include "framework/params/param_spec.h"
+#include "framework/params/param_binding.h"
 #include "framework/solver/solver.h"
 #include "solvers/fluid/fluid_solver_state.h"
 
 namespace upf {
 
+struct PcisphParams {
+  double eta = 0;  // target average compression
+  int min_iterations = 0, max_iterations = 0;
+};
+
 class PcisphSolver final : public Solver {
  public:
-  PcisphSolver(const ParamValues& params, std::vector<MaterialId> materials);
+  PcisphSolver(const PcisphParams& params, std::vector<MaterialId> materials);
 
   std::string_view name() const override { return "pcisph"; }
   void prepare(World& world) override;
@@ -31,7 +36,7 @@ class PcisphSolver final : public Solver {
   void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
 
-  static std::vector<ParamSpec> param_specs();
+  static ParamBinding<PcisphParams> param_binding();
   // sum over the template neighbourhood of |grad W|^2 (the symmetric lattice makes sum grad W = 0
   // up to round-off, kept anyway as in the paper). delta = delta_scale / dt^2.
   static double template_delta_scale(Real spacing, const CubicSplineKernel& kernel);

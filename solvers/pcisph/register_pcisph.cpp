@@ -13,9 +13,10 @@ void register_pcisph(Registry& registry) {
       "Predictive-corrective incompressible SPH: iterates pressures until the average "
       "compression is below eta (the default fluid solver)",
       "Solenthaler & Pajarola 2009, Predictive-Corrective Incompressible SPH, ACM TOG 28(3)",
-      PcisphSolver::param_specs(),
+      PcisphSolver::param_binding().specs(),
       [](const ParamValues& values, std::vector<MaterialId> materials) {
-        return std::make_unique<PcisphSolver>(values, std::move(materials));
+        return std::make_unique<PcisphSolver>(PcisphSolver::param_binding().bind(values),
+                                              std::move(materials));
       },
       fluid_solver_coupling(),
   });

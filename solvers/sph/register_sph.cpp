@@ -14,9 +14,10 @@ void register_sph(Registry& registry) {
       "evaluation per step, the step limited by the speed of sound sqrt(k)",
       "Müller, Charypar & Gross 2003, Particle-Based Fluid Simulation for Interactive "
       "Applications, SCA 2003",
-      SphSolver::param_specs(),
+      SphSolver::param_binding().specs(),
       [](const ParamValues& values, std::vector<MaterialId> materials) {
-        return std::make_unique<SphSolver>(values, std::move(materials));
+        return std::make_unique<SphSolver>(SphSolver::param_binding().bind(values),
+                                           std::move(materials));
       },
       fluid_solver_coupling(),
   });

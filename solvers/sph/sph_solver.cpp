@@ -13,27 +13,30 @@
 
 namespace upf {
 
-std::vector<ParamSpec> SphSolver::param_specs() {
-  return {
-      {"stiffness", "m^2/s^2", 0, 0, 1e7,
-       "k in p = k (rho - rho0), the step obeys CFL on sqrt(k); 0: 2 c^2 with c = 10 sqrt(2 g H), "
-       "H the height of the initial liquid: WCSPH's automatic speed of sound, doubled in k since "
-       "the paper's pressure force is half the pressure gradient (density varies about 1 %)"},
-      {"viscosity", "Pa s", 0, 0, 1e4,
-       "dynamic viscosity mu of the paper's viscosity force, added to the material's shared "
-       "viscosity (0: only the shared one, so comparisons isolate the pressure solver)"},
-      {"cubic_spline", "1", 1, 0, 1,
-       "1: the cubic spline for density, pressure and viscosity; 0: the paper's kernels (poly6, "
-       "spiky, viscosity), which need viscosity of about 20 Pa s to stay stable",
-       true},
-  };
+ParamBinding<SphParams> SphSolver::param_binding() {
+  ParamBinding<SphParams> b;
+  b.add({"stiffness", "m^2/s^2", 0, 0, 1e7,
+         "k in p = k (rho - rho0), the step obeys CFL on sqrt(k); 0: 2 c^2 with c = 10 "
+         "sqrt(2 g H), H the height of the initial liquid: WCSPH's automatic speed of sound, "
+         "doubled in k since the paper's pressure force is half the pressure gradient (density "
+         "varies about 1 %)"},
+        &SphParams::stiffness);
+  b.add({"viscosity", "Pa s", 0, 0, 1e4,
+         "dynamic viscosity mu of the paper's viscosity force, added to the material's shared "
+         "viscosity (0: only the shared one, so comparisons isolate the pressure solver)"},
+        &SphParams::viscosity);
+  b.add({"cubic_spline", "1", 1, 0, 1,
+         "1: the cubic spline for density, pressure and viscosity; 0: the paper's kernels "
+         "(poly6, spiky, viscosity), which need viscosity of about 20 Pa s to stay stable"},
+        &SphParams::cubic_spline);
+  return b;
 }
 
-SphSolver::SphSolver(const ParamValues& params, std::vector<MaterialId> materials)
+SphSolver::SphSolver(const SphParams& params, std::vector<MaterialId> materials)
     : EquationOfStateSolver(std::move(materials)),
-      requested_stiffness_(Real(params.get("stiffness"))),
-      mu_(Real(params.get("viscosity"))),
-      cubic_spline_(params.get("cubic_spline") != 0) {}
+      requested_stiffness_(Real(params.stiffness)),
+      mu_(Real(params.viscosity)),
+      cubic_spline_(params.cubic_spline) {}
 
 Real SphSolver::poly6_lattice_scale(Real spacing, Real support_radius) {
   const MullerKernels w(support_radius);
@@ -82,7 +85,8 @@ void SphSolver::add_own_non_pressure(const World& world, const FluidView& f, Rea
     using Kernels = std::decay_t<decltype(kernels)>;
     // The spline density is already there; another kernel's replaces it once the shared viscosity
     // has read it at every neighbour.
-    if (!cubic_spline_) exec.run(mine, SphDensityStage<Kernels>{f, kernels, density_scale, density});
+    if (!cubic_spline_)
+      exec.run(mine, SphDensityStage<Kernels>{f, kernels, density_scale, density});
     if (mu_ > 0) exec.run(mine, SphViscosityStage<Kernels>{f, kernels, density, mu_, a_other});
   });
 }
@@ -105,7 +109,8 @@ void SphSolver::add_reactions(World& world, const FluidView& f, const Real* dens
   // kernel of the set in use.
   with_kernels(world, [&](const auto& kernels, Real) {
     using Kernels = std::decay_t<decltype(kernels)>;
-    fluid().add_reactions(world, f, density, PressureOverDensitySquared{pressure, density, Real(0.5)},
+    fluid().add_reactions(world, f, density,
+                          PressureOverDensitySquared{pressure, density, Real(0.5)},
                           KernelSetPressureGradient<Kernels>{kernels});
   });
 }

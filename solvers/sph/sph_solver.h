@@ -43,19 +43,25 @@
 
 #include <vector>
 
-#include "framework/params/param_spec.h"
+#include "framework/params/param_binding.h"
 #include "solvers/fluid/equation_of_state_solver.h"
 
 namespace upf {
 
+struct SphParams {
+  double stiffness = 0;  // m^2/s^2; 0: automatic
+  double viscosity = 0;  // Pa s, added to the material's
+  bool cubic_spline = true;
+};
+
 class SphSolver final : public EquationOfStateSolver {
  public:
-  SphSolver(const ParamValues& params, std::vector<MaterialId> materials);
+  SphSolver(const SphParams& params, std::vector<MaterialId> materials);
 
   std::string_view name() const override { return "sph"; }
   Real max_time_step(const World& world) const override;
 
-  static std::vector<ParamSpec> param_specs();
+  static ParamBinding<SphParams> param_binding();
   // The stiffness in use: `stiffness`, or 2 (10 sqrt(2 g H))^2 when it is 0. Set by prepare().
   Real stiffness() const { return stiffness_; }
   // 1 / (spacing^3 sum W_poly6) over the template lattice neighbourhood: the factor that makes the

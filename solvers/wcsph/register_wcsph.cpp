@@ -13,9 +13,10 @@ void register_wcsph(Registry& registry) {
       "Weakly compressible SPH with the Tait equation: one pressure evaluation per step, the "
       "step limited by a speed of sound chosen for about 1 % density variation",
       "Becker & Teschner 2007, Weakly Compressible SPH for Free Surface Flows, SCA 2007",
-      WcsphSolver::param_specs(),
+      WcsphSolver::param_binding().specs(),
       [](const ParamValues& values, std::vector<MaterialId> materials) {
-        return std::make_unique<WcsphSolver>(values, std::move(materials));
+        return std::make_unique<WcsphSolver>(WcsphSolver::param_binding().bind(values),
+                                             std::move(materials));
       },
       fluid_solver_coupling(),
   });

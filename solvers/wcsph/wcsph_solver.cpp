@@ -7,24 +7,27 @@
 
 namespace upf {
 
-std::vector<ParamSpec> WcsphSolver::param_specs() {
-  return {
-      {"sound_speed", "m/s", 0, 0, 1e4,
-       "speed of sound c of the Tait equation; 0: 10 sqrt(2 g H), H the height of the "
-       "initial liquid, for density variations of about 1 %"},
-      {"alpha", "1", 0.1, 0, 10,
-       "artificial viscosity constant (the paper uses 0.08 to 0.5); 0 leaves only the shared "
-       "viscosity, so comparisons isolate the pressure solver"},
-      {"cfl", "1", 0.4, 0.01, 1,
-       "CFL number of dt <= cfl * spacing / (c + |v|max); it replaces time.cfl for WCSPH"},
-  };
+ParamBinding<WcsphParams> WcsphSolver::param_binding() {
+  ParamBinding<WcsphParams> b;
+  b.add({"sound_speed", "m/s", 0, 0, 1e4,
+         "speed of sound c of the Tait equation; 0: 10 sqrt(2 g H), H the height of the "
+         "initial liquid, for density variations of about 1 %"},
+        &WcsphParams::sound_speed);
+  b.add({"alpha", "1", 0.1, 0, 10,
+         "artificial viscosity constant (the paper uses 0.08 to 0.5); 0 leaves only the shared "
+         "viscosity, so comparisons isolate the pressure solver"},
+        &WcsphParams::alpha);
+  b.add({"cfl", "1", 0.4, 0.01, 1,
+         "CFL number of dt <= cfl * spacing / (c + |v|max); it replaces time.cfl for WCSPH"},
+        &WcsphParams::cfl);
+  return b;
 }
 
-WcsphSolver::WcsphSolver(const ParamValues& params, std::vector<MaterialId> materials)
+WcsphSolver::WcsphSolver(const WcsphParams& params, std::vector<MaterialId> materials)
     : EquationOfStateSolver(std::move(materials)),
-      requested_sound_speed_(Real(params.get("sound_speed"))),
-      alpha_(Real(params.get("alpha"))),
-      cfl_(Real(params.get("cfl"))) {}
+      requested_sound_speed_(Real(params.sound_speed)),
+      alpha_(Real(params.alpha)),
+      cfl_(Real(params.cfl)) {}
 
 void WcsphSolver::prepare_method(World& world) {
   sound_speed_ = requested_sound_speed_ > 0

@@ -29,19 +29,25 @@
 
 #include <vector>
 
-#include "framework/params/param_spec.h"
+#include "framework/params/param_binding.h"
 #include "solvers/fluid/equation_of_state_solver.h"
 
 namespace upf {
 
+struct WcsphParams {
+  double sound_speed = 0;  // m/s; 0: automatic
+  double alpha = 0;        // artificial viscosity
+  double cfl = 0;
+};
+
 class WcsphSolver final : public EquationOfStateSolver {
  public:
-  WcsphSolver(const ParamValues& params, std::vector<MaterialId> materials);
+  WcsphSolver(const WcsphParams& params, std::vector<MaterialId> materials);
 
   std::string_view name() const override { return "wcsph"; }
   Real max_time_step(const World& world) const override;
 
-  static std::vector<ParamSpec> param_specs();
+  static ParamBinding<WcsphParams> param_binding();
   // The speed of sound in use: `sound_speed`, or 10 sqrt(2 g H) when it is 0. Set by prepare().
   Real sound_speed() const { return sound_speed_; }
 
