@@ -7,6 +7,16 @@
 #define UPF_HD
 #endif
 
+// Inlined into its caller whatever the compiler's heuristics say, for the helpers of a particle
+// stage's loop: left out of line, DEM's contact helper (apply) cost 22 % of the contact stage.
+#if defined(__CUDACC__)
+#define UPF_INLINE __forceinline__
+#elif defined(__GNUC__)
+#define UPF_INLINE __attribute__((always_inline)) inline
+#else
+#define UPF_INLINE inline
+#endif
+
 namespace upf {
 
 #ifdef UPF_DOUBLE

@@ -35,8 +35,8 @@ struct DemForcesStage {
   const MaterialId* mat;
   const ContainerBox* boxes;
   Vec3 gravity;
-  Real h;          // the sub-step, s
-  Real t_in_step;  // time since the world step began, s
+  Real h;                        // the sub-step, s
+  Real t_in_step;                // time since the world step began, s
   const GrainFluidState* fluid;  // null without liquid
   Real fluid_weight;
   Vec3* fluid_force;
@@ -51,13 +51,8 @@ struct DemForcesStage {
       const std::uint32_t j = contacts.partner[k];
       if (j & kDemWallPartner) {
         wall(i, k, j & ~kDemWallPartner, f, tau);
-      } else if (type[j] == ParticleType::Granular) {
-        sphere(i, k, x[i] - x[j], ri + radius[j], v[i] - v[j], w[i] * ri + w[j] * radius[j],
-               w[i] - w[j], pairs.pair(mat[i], mat[j]), radius[j], f, tau);
       } else {
-        // A body's boundary particle, moving on at its step-start velocity.
-        sphere(i, k, x[i] - (x[j] + v[j] * t_in_step), ri + pairs.boundary_radius, v[i] - v[j],
-               w[i] * ri, w[i], pairs.boundary[mat[i]], pairs.boundary_radius, f, tau);
+        sphere(i, k, j, f, tau);
       }
     }
     if (fluid && fluid[i].fluid_fraction > 0) {
@@ -74,9 +69,9 @@ struct DemForcesStage {
  private:
   // A force at contact k: on i, with its torque; the partner's torque recorded on the candidate.
   // r_partner: the partner's radius, for the torque it gets back (DemGatherPairsStage).
-  UPF_HD void apply(std::uint32_t i, std::uint32_t k, const DemPairParams& pp, Real overlap,
-                    const Vec3& n, const Vec3& v_rel, const Vec3& w_rel, Real r_partner, Vec3& f,
-                    Vec3& tau) const {
+  UPF_INLINE UPF_HD void apply(std::uint32_t i, std::uint32_t k, const DemPairParams& pp,
+                               Real overlap, const Vec3& n, const Vec3& v_rel, const Vec3& w_rel,
+                               Real r_partner, Vec3& f, Vec3& tau) const {
     const DemContactForce c = dem_contact_force(model, pp, overlap, n, v_rel, contacts.xi[k], h);
     f += c.force;
     // The tangential force acts at the contact point, -R_i n from the centre.
@@ -87,11 +82,16 @@ struct DemForcesStage {
     contacts.touch(k, c.xi, c.force, cross(n * r_partner, -tangential), rolling);
   }
 
-  // Two spheres, d = x_i - x_partner apart, touching within `reach`; v_lin = v_i - v_partner,
-  // spin = the sum of w R over both, w_rel = w_i - w_partner.
-  UPF_HD void sphere(std::uint32_t i, std::uint32_t k, const Vec3& d, Real reach,
-                     const Vec3& v_lin, const Vec3& spin, const Vec3& w_rel,
-                     const DemPairParams& pp, Real r_partner, Vec3& f, Vec3& tau) const {
+  // Grain i against sphere j: another grain, or a body's boundary particle moving on at its
+  // step-start velocity. The partner's velocity and spin are read only for a touching pair: most
+  // candidates are apart.
+  UPF_INLINE UPF_HD void sphere(std::uint32_t i, std::uint32_t k, std::uint32_t j, Vec3& f,
+                                Vec3& tau) const {
+    const bool grain = type[j] == ParticleType::Granular;
+    const Real ri = radius[i];
+    const Real rj = grain ? radius[j] : pairs.boundary_radius;
+    const Vec3 d = grain ? x[i] - x[j] : x[i] - (x[j] + v[j] * t_in_step);
+    const Real reach = ri + rj;
     const Real d2 = squared_norm(d);
     if (d2 >= reach * reach || d2 <= 0) {
       contacts.separate(k);
@@ -99,13 +99,16 @@ struct DemForcesStage {
     }
     const Real dist = std::sqrt(d2);
     const Vec3 n = d / dist;
-    apply(i, k, pp, reach - dist, n, v_lin - cross(spin, n), w_rel, r_partner, f, tau);
+    const Vec3 spin = grain ? w[i] * ri + w[j] * rj : w[i] * ri;
+    const Vec3 w_rel = grain ? w[i] - w[j] : w[i];
+    const DemPairParams& pp = grain ? pairs.pair(mat[i], mat[j]) : pairs.boundary[mat[i]];
+    apply(i, k, pp, reach - dist, n, v[i] - v[j] - cross(spin, n), w_rel, rj, f, tau);
   }
 
   // A container face (code = container * 6 + face), if the grain is inside the box (or within a
   // radius of it).
-  UPF_HD void wall(std::uint32_t i, std::uint32_t k, std::uint32_t code, Vec3& f,
-                   Vec3& tau) const {
+  UPF_INLINE UPF_HD void wall(std::uint32_t i, std::uint32_t k, std::uint32_t code, Vec3& f,
+                              Vec3& tau) const {
     const Real ri = radius[i];
     const ContainerBox& box = boxes[code / 6];
     bool inside = true;
@@ -226,7 +229,8 @@ struct DemFluidStateStage {
 
 // The grains' fluid force on liquid particle j: each grain's force shared among its liquid
 // neighbours by their Shepard weights, which sum to one, so the liquid gets exactly the opposite
-// of what the grains got. Weights at the step-start positions x0, the ones weight_sum was made with.
+// of what the grains got. Weights at the step-start positions x0, the ones weight_sum was made
+// with.
 struct DemLiquidReactionStage {
   NeighbourView grains;  // liquid -> grains
   CubicSplineKernel kernel;
