@@ -2,6 +2,7 @@
 // backends"): every stage the CPU executor runs is instantiated here in one kernel template, so
 // the same source stays device-clean until the device pipeline launches it.
 #include "solvers/dem/dem_stages.h"
+#include "solvers/dfsph/dfsph_kernels.h"
 #include "solvers/fluid/boundary_reactions.h"
 #include "solvers/fluid/fluid_stages.h"
 #include "solvers/pcisph/pcisph_kernels.h"
@@ -49,6 +50,19 @@ template __global__ void run_stage(SphPressureAccelerationStage<CubicKernelSet>,
 template __global__ void run_stage(TaitPressureStage, ParticleRange);
 template __global__ void run_stage(WcsphPressureAccelerationStage, ParticleRange);
 template __global__ void run_stage(ArtificialViscosityStage, ParticleRange);
+
+template __global__ void run_stage(DfsphFactorStage, ParticleRange);
+template __global__ void run_stage(BoundaryVelocityDivergenceStage, ParticleRange);
+template __global__ void run_stage(DfsphStiffnessStage, ParticleRange);
+template __global__ void run_stage(DfsphAccumulateStage, ParticleRange);
+template __global__ void run_stage(DfsphWarmStartStage, ParticleRange);
+template __global__ void run_stage(ClearStiffnessStage, ParticleRange);
+template __global__ void run_stage(DfsphVelocityStage, ParticleRange);
+template __global__ void run_stage(DfsphKickStage, ParticleRange);
+template __global__ void run_stage(DfsphIntegrateStage, ParticleRange);
+template __global__ void run_stage(CopyVelocityStage, ParticleRange);
+template __global__ void run_stage(BoundaryReactionStage<TotalStiffness, CubicSplineGradient>,
+                                   ParticleRange);
 
 template __global__ void run_stage(DemForcesStage, ParticleRange);
 template __global__ void run_stage(DemGatherPairsStage, ParticleRange);

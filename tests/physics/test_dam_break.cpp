@@ -33,5 +33,15 @@ TEST(DamBreak, WcsphKeepsWaterInTank) {
   EXPECT_LT(r.max_avg_density_error, 0.02);
 }
 
+// DFSPH (Bender & Koschier 2017): with both solvers warm-started, the constant-density solver
+// needs few iterations per step at eta = 1 % (their Table 2: about 2-4 on their dam breaks), and
+// every step ends with its average compression at most eta.
+TEST(DamBreak, DfsphKeepsWaterInTankWithFewIterations) {
+  const auto r = testing::run_dam_break({{"name", "dfsph"}, {"eta", 0.01}}, 2, 2.0);
+  testing::expect_water_kept_in_tank(r);
+  EXPECT_LE(r.mean_iterations, 10.0);
+  EXPECT_LE(r.max_avg_density_error, 0.01);
+}
+
 }  // namespace
 }  // namespace upf

@@ -1,0 +1,89 @@
+// Divergence-Free SPH (Bender & Koschier 2015, "Divergence-free smoothed particle
+// hydrodynamics", SCA; 2017, "Divergence-free SPH for incompressible and viscous fluids", IEEE
+// TVCG 23(3)), assembled from the shared fluid pieces (FluidSolverState) like every fluid solver.
+//
+// One step (the paper's Algorithm 1, with the world's neighbour search at its start):
+//   non_pressure  densities and kernel gradients at the current positions, the factors 1/D_i,
+//                 gravity + viscosity + the grains' force (shared_forces);
+//   divergence    the divergence-free solver: corrects v until the average density change per
+//                 step, dt max(Drho/Dt, 0) / rho0, is below eta_divergence (warm-started);
+//   pressure      v* = v + dt a_other, then the constant-density solver corrects v* until the
+//                 average predicted compression is below eta (warm-started), as PCISPH's eta;
+//   integration   reactions on bodies from the step's total K (boundary_reactions.h), v = v*,
+//                 x += dt v.
+// The per-particle functions are in dfsph_kernels.h. The viscosity is evaluated before the
+// divergence solve (the paper evaluates it after the previous step's): the shared forces are
+// computed together with the density the factors need.
+//
+// Relaxation: both solvers update every particle at once from its neighbours' previous K (a
+// Jacobi iteration), which overshoots modes that alternate from particle to particle. With the
+// paper's full step (omega = 1) water at rest in samples/hydrostatic_tank.json kept jittering
+// (kinetic energy 0.025-0.03 J after 1.5 s, PCISPH 0.003 J) and more iterations made it worse
+// (0.05 J with 4 per step); omega = 0.5, IISPH's relaxation, settles it to 0.003 J and more
+// iterations then reduce the error. docs/solvers.md has the figures.
+//
+// Warm starts: each solver starts from the K of the previous step (stored without its dt, in the
+// fields dfsph.density_stiffness and dfsph.divergence_stiffness so they follow reordering), as
+// the paper does; `warm_start` 0 switches it off.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "framework/params/param_binding.h"
+#include "framework/solver/solver.h"
+#include "solvers/fluid/fluid_solver_state.h"
+
+namespace upf {
+
+struct DfsphParams {
+  double eta = 0;             // constant-density solver: target average compression
+  double eta_divergence = 0;  // divergence-free solver: target average density change per step
+  int min_iterations = 0, max_iterations = 0;
+  int max_divergence_iterations = 0;
+  bool divergence = true;  // run the divergence-free solver
+  bool warm_start = true;
+  double omega = 0;  // relaxation of the Jacobi update
+};
+
+class DfsphSolver final : public Solver {
+ public:
+  DfsphSolver(const DfsphParams& params, std::vector<MaterialId> materials);
+
+  std::string_view name() const override { return "dfsph"; }
+  void prepare(World& world) override;
+  Real max_time_step(const World& world) const override;
+  std::vector<std::string> stages() const override;
+  void step(World& world, Real dt, StageRunner& run) override;
+  SolverStats stats() const override { return stats_; }
+
+  static ParamBinding<DfsphParams> param_binding();
+  // The divergence-free solver's last step: iterations and average density change per step.
+  int divergence_iterations() const { return divergence_iterations_; }
+  double divergence_error() const { return divergence_error_; }
+
+ private:
+  struct Solve {
+    bool divergence;
+    double eta;
+    int min_iterations, max_iterations;
+    FieldHandle<Real> stiffness;
+  };
+  // Corrects v_star_ until the solve's error is below its eta; returns {iterations, error}.
+  std::pair<int, double> correct(World& world, const FluidView& f, const Real* density, Real dt,
+                                 const Solve& solve);
+
+  DfsphParams params_;
+  std::vector<MaterialId> materials_;
+  FluidSolverState fluid_;
+  FieldHandle<Real> density_stiffness_, divergence_stiffness_;
+  // Per-step arrays over all particles, rewritten every step.
+  std::vector<Real> factor_, boundary_divergence_, rho_adv_, k_, k_total_;
+  std::vector<Vec3> v_star_;
+  Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
+  SolverStats stats_;
+  int divergence_iterations_ = 0;
+  double divergence_error_ = 0;
+};
+
+}  // namespace upf
