@@ -3,6 +3,7 @@
 #include "materials/register_materials.h"
 #include "solvers/dem/register_dem.h"
 #include "solvers/dfsph/register_dfsph.h"
+#include "solvers/iisph/register_iisph.h"
 #include "solvers/pcisph/register_pcisph.h"
 #include "solvers/sph/register_sph.h"
 #include "solvers/wcsph/register_wcsph.h"
@@ -15,6 +16,7 @@ void register_builtins(Registry& registry) {
   register_sph(registry);
   register_wcsph(registry);
   register_dfsph(registry);
+  register_iisph(registry);
   register_dem(registry);
 }
 

@@ -6,70 +6,19 @@
 //   v_i -= dt [ sum_j m_j (K_i + K_j) grad W_ij + rho0_i K_i sum_b V_b grad W_ib ]
 // (the boundary term of Akinci et al. 2012, Psi_b = rho0_i V_b). K_i is chosen so that, with
 // the neighbours' K held fixed, particle i's predicted density change cancels its error:
-//   K_i = omega (rho_adv_i - rho0_i) / (dt^2 D_i),
-//   D_i = |sum_j m_j grad W_ij + rho0_i sum_b V_b grad W_ib|^2 + sum_j |m_j grad W_ij|^2,
+//   K_i = omega (rho_adv_i - rho0_i) / (dt^2 D_i)     (D_i: solvers/fluid/density_rate.h)
 // which is the paper's kappa_i = (rho_adv_i - rho0) alpha_i / dt^2 with alpha_i = rho_i / D_i
 // divided by rho_i. The constant-density solver predicts rho_adv_i = rho_i + dt Drho_i/Dt at the
 // working velocity, clamped below at rho0 (only compression is corrected); the divergence-free
 // solver uses rho_adv_i = rho0 + dt max(Drho_i/Dt, 0), so the same K formula cancels the
-// density's rate of change. Drho_i/Dt = sum_j m_j (v_i - v_j) . grad W_ij
-//                                     + rho0_i sum_b V_b (v_i - v_b) . grad W_ib.
+// density's rate of change, Drho_i/Dt (density_rate.h, with D_i).
 // All particles update at once (Jacobi), so the relaxation omega (the paper: 1) damps the
 // checkerboard modes that a full step overshoots; dfsph_solver.h says why upf uses 0.5.
 #pragma once
 
-#include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/density_rate.h"
 
 namespace upf {
-
-// The factor 1 / D_i (0 where D_i vanishes: a particle with no neighbour is not corrected).
-// `fluid_gradient` holds grad W_ij per fluid-list slot, `boundary_gradient` sum_b V_b grad W_ib.
-struct DfsphFactorStage {
-  FluidView f;
-  const Vec3* fluid_gradient;
-  const Vec3* boundary_gradient;
-  Real* factor;
-  UPF_HD void operator()(std::uint32_t i) const {
-    const Real rho0 = f.rest_density[f.material[i]];
-    Vec3 sum = boundary_gradient[i] * rho0;
-    Real sum_squares = 0;
-    for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-      const Vec3 g = fluid_gradient[k] * f.mass[f.fluid.indices[k]];
-      sum += g;
-      sum_squares += squared_norm(g);
-    }
-    const Real d = squared_norm(sum) + sum_squares;
-    factor[i] = d > Real(0) ? Real(1) / d : Real(0);
-  }
-};
-
-// sum_b V_b v_b . grad W_ib: the moving boundaries' part of Drho_i/Dt, fixed during a step.
-struct BoundaryVelocityDivergenceStage {
-  FluidView f;
-  Real* boundary_divergence;
-  UPF_HD void operator()(std::uint32_t i) const {
-    Real sum = 0;
-    for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
-      const std::uint32_t b = f.boundary.indices[k];
-      sum += f.boundary_volume[b] * dot(f.v[b], f.kernel.gradient(f.x[i] - f.x[b]));
-    }
-    boundary_divergence[i] = sum;
-  }
-};
-
-// Drho_i/Dt at the working velocities `v`.
-UPF_HD inline Real dfsph_density_rate(const FluidView& f, const Vec3* fluid_gradient,
-                                      const Vec3& boundary_gradient, Real boundary_divergence,
-                                      const Vec3* v, std::uint32_t i) {
-  const Vec3 vi = v[i];
-  Real rate = 0;
-  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-    const std::uint32_t j = f.fluid.indices[k];
-    rate += f.mass[j] * dot(vi - v[j], fluid_gradient[k]);
-  }
-  const Real rho0 = f.rest_density[f.material[i]];
-  return rate + rho0 * (dot(vi, boundary_gradient) - boundary_divergence);
-}
 
 // The predicted density rho_adv_i of either solver (see the header) and K_i from it; K_i is
 // also added to `k_total` (reactions on bodies, the exported pressure) and, scaled to be
@@ -91,7 +40,7 @@ struct DfsphStiffnessStage {
   UPF_HD void operator()(std::uint32_t i) const {
     const Real rho0 = f.rest_density[f.material[i]];
     const Real rate =
-        dfsph_density_rate(f, fluid_gradient, boundary_gradient[i], boundary_divergence[i], v, i);
+        density_rate(f, fluid_gradient, boundary_gradient[i], boundary_divergence[i], v, i);
     Real adv;
     if (divergence) {
       const std::uint32_t count = (f.fluid.offsets[i + 1] - f.fluid.offsets[i]) +
@@ -164,14 +113,6 @@ struct DfsphVelocityStage {
   }
 };
 
-// v* = v + a_other dt, the non-pressure forces before the constant-density solver.
-struct DfsphKickStage {
-  const Vec3* a_other;
-  Real dt;
-  Vec3* v;
-  UPF_HD void operator()(std::uint32_t i) const { v[i] += a_other[i] * dt; }
-};
-
 // The step's end: v = v*, x += v dt; the exported pressure p_i = K_i rho_i^2 (the pressure of
 // the symmetric SPH form a_i = -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) grad W_ij).
 struct DfsphIntegrateStage {
@@ -187,13 +128,6 @@ struct DfsphIntegrateStage {
     x[i] += v[i] * dt;
     pressure[i] = k_total[i] * density[i] * density[i];
   }
-};
-
-// Copies the velocities of every particle into the working array.
-struct CopyVelocityStage {
-  const Vec3* v;
-  Vec3* v_work;
-  UPF_HD void operator()(std::uint32_t i) const { v_work[i] = v[i]; }
 };
 
 // The pressure factor P_i of boundary_reactions.h: the step's total K_i.

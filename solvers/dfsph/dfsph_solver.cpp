@@ -135,8 +135,8 @@ void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
     k_.assign(n, Real(0));
     k_total_.assign(n, Real(0));
     exec.run(fluid_.owned.range(),
-             DfsphFactorStage{f, fluid_.fluid_gradient.data(), fluid_.boundary_gradient.data(),
-                              factor_.data()});
+             InverseDiagonalStage{f, fluid_.fluid_gradient.data(), fluid_.boundary_gradient.data(),
+                                  factor_.data()});
     exec.run(fluid_.owned.range(), BoundaryVelocityDivergenceStage{f, boundary_divergence_.data()});
     exec.run(all_particles(n), CopyVelocityStage{p.velocity.data(), v_star_.data()});
   });
@@ -155,7 +155,7 @@ void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
 
   run("pressure", [&] {
     exec.run(fluid_.owned.range(),
-             DfsphKickStage{fluid_.other_acceleration.data(), dt, v_star_.data()});
+             VelocityKickStage{fluid_.other_acceleration.data(), dt, v_star_.data()});
     const auto [iterations, error] = correct(
         world, f, density, dt,
         {false, params_.eta, params_.min_iterations, params_.max_iterations, density_stiffness_});

@@ -5,6 +5,7 @@
 #include "solvers/dfsph/dfsph_kernels.h"
 #include "solvers/fluid/boundary_reactions.h"
 #include "solvers/fluid/fluid_stages.h"
+#include "solvers/iisph/iisph_kernels.h"
 #include "solvers/pcisph/pcisph_kernels.h"
 #include "solvers/sph/sph_kernel_sets.h"
 #include "solvers/sph/sph_kernels.h"
@@ -51,18 +52,26 @@ template __global__ void run_stage(TaitPressureStage, ParticleRange);
 template __global__ void run_stage(WcsphPressureAccelerationStage, ParticleRange);
 template __global__ void run_stage(ArtificialViscosityStage, ParticleRange);
 
-template __global__ void run_stage(DfsphFactorStage, ParticleRange);
+template __global__ void run_stage(InverseDiagonalStage, ParticleRange);
 template __global__ void run_stage(BoundaryVelocityDivergenceStage, ParticleRange);
 template __global__ void run_stage(DfsphStiffnessStage, ParticleRange);
 template __global__ void run_stage(DfsphAccumulateStage, ParticleRange);
 template __global__ void run_stage(DfsphWarmStartStage, ParticleRange);
 template __global__ void run_stage(ClearStiffnessStage, ParticleRange);
 template __global__ void run_stage(DfsphVelocityStage, ParticleRange);
-template __global__ void run_stage(DfsphKickStage, ParticleRange);
+template __global__ void run_stage(VelocityKickStage, ParticleRange);
 template __global__ void run_stage(DfsphIntegrateStage, ParticleRange);
 template __global__ void run_stage(CopyVelocityStage, ParticleRange);
 template __global__ void run_stage(BoundaryReactionStage<TotalStiffness, CubicSplineGradient>,
                                    ParticleRange);
+
+template __global__ void run_stage(IisphAdvectedDensityStage, ParticleRange);
+template __global__ void run_stage(HalvePressureStage, ParticleRange);
+template __global__ void run_stage(IisphPressureAccelerationStage, ParticleRange);
+template __global__ void run_stage(IisphPressureUpdateStage, ParticleRange);
+template __global__ void run_stage(CopyScalarStage, ParticleRange);
+template __global__ void run_stage(
+    BoundaryReactionStage<PressureOverDensitySquared, CubicSplineGradient>, ParticleRange);
 
 template __global__ void run_stage(DemForcesStage, ParticleRange);
 template __global__ void run_stage(DemGatherPairsStage, ParticleRange);

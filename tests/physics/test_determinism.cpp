@@ -42,9 +42,10 @@ TEST(Determinism, OneAndTwoThreadsGiveBitwiseIdenticalPositions) {
   EXPECT_GT(testing::bitwise_differences(one, start, true), 1000u);
 }
 
-// SPH, WCSPH and DFSPH share PCISPH's reductions (compression_stats.h) and gather-only loops.
+// SPH, WCSPH, DFSPH and IISPH share PCISPH's reductions (compression_stats.h) and gather-only
+// loops.
 TEST(Determinism, StateEquationSolversGiveBitwiseIdenticalPositions) {
-  for (const std::string solver : {"sph", "wcsph", "dfsph"}) {
+  for (const std::string solver : {"sph", "wcsph", "dfsph", "iisph"}) {
     SCOPED_TRACE(solver);
     const auto one = run_steps(small_dam_break(solver), 1, 100);
     expect_identical(one, run_steps(small_dam_break(solver), 2, 100));

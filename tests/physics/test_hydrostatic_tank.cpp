@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "hydrostatic_tank.h"
 
@@ -42,12 +43,22 @@ TEST(HydrostaticTank, PcisphHoldsHydrostaticPressureAtRest) {
   expect_incompressible_tank(doc, doc["materials"]["water"]["solver"]["eta"]);
 }
 
-// DFSPH (Bender & Koschier 2017) on the same sample with PCISPH's eta.
-TEST(HydrostaticTank, DfsphHoldsHydrostaticPressureAtRest) {
+// The sample with its liquid moved by `solver` at PCISPH's eta.
+void expect_incompressible_tank_with(const std::string& solver) {
   auto doc = testing::load_sample_json("hydrostatic_tank.json");
   const double eta = doc["materials"]["water"]["solver"]["eta"];
-  doc["materials"]["water"]["solver"] = {{"name", "dfsph"}, {"eta", eta}};
+  doc["materials"]["water"]["solver"] = {{"name", solver}, {"eta", eta}};
   expect_incompressible_tank(doc, eta);
+}
+
+// DFSPH (Bender & Koschier 2017).
+TEST(HydrostaticTank, DfsphHoldsHydrostaticPressureAtRest) {
+  expect_incompressible_tank_with("dfsph");
+}
+
+// IISPH (Ihmsen et al. 2014).
+TEST(HydrostaticTank, IisphHoldsHydrostaticPressureAtRest) {
+  expect_incompressible_tank_with("iisph");
 }
 
 // The weakly compressible solvers at 2.5 cm spacing (the sample's 2 cm needs 1.6x the steps and

@@ -1,0 +1,57 @@
+// Implicit Incompressible SPH (Ihmsen, Cornelis, Solenthaler, Horvath & Teschner 2014,
+// "Implicit incompressible SPH", IEEE TVCG 20(3)), assembled from the shared fluid pieces
+// (FluidSolverState) like every fluid solver.
+//
+// One step:
+//   non_pressure  densities and kernel gradients at the current positions, gravity + viscosity
+//                 + the grains' force (shared_forces), 1/D_i, the moving boundaries' part of the
+//                 density's rate of change;
+//   pressure      v_adv = v + dt a_other, rho_adv = rho + dt Drho/Dt(v_adv); pressures start at
+//                 half the previous step's (the paper's warm start) and are relaxed by Jacobi
+//                 iterations (omega = 0.5, the paper's) until the average compression of the
+//                 predicted densities is at most eta, as PCISPH's stopping test;
+//   integration   reactions on bodies (boundary_reactions.h, P_i = p_i / rho_i^2), then
+//                 symplectic Euler with the final pressure accelerations.
+// The per-particle functions are in iisph_kernels.h.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "framework/params/param_binding.h"
+#include "framework/solver/solver.h"
+#include "solvers/fluid/fluid_solver_state.h"
+
+namespace upf {
+
+struct IisphParams {
+  double eta = 0;  // target average compression
+  int min_iterations = 0, max_iterations = 0;
+  double omega = 0;  // Jacobi relaxation
+};
+
+class IisphSolver final : public Solver {
+ public:
+  IisphSolver(const IisphParams& params, std::vector<MaterialId> materials);
+
+  std::string_view name() const override { return "iisph"; }
+  void prepare(World& world) override;
+  Real max_time_step(const World& world) const override;
+  std::vector<std::string> stages() const override;
+  void step(World& world, Real dt, StageRunner& run) override;
+  SolverStats stats() const override { return stats_; }
+
+  static ParamBinding<IisphParams> param_binding();
+
+ private:
+  IisphParams params_;
+  std::vector<MaterialId> materials_;
+  FluidSolverState fluid_;
+  // Per-step arrays over all particles, rewritten every step.
+  std::vector<Real> inverse_diagonal_, boundary_divergence_, rho_adv_, predicted_, next_;
+  std::vector<Vec3> v_adv_;
+  Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
+  SolverStats stats_;
+};
+
+}  // namespace upf
