@@ -19,8 +19,9 @@ constexpr std::uint32_t kMinDivergenceNeighbours = 20;
 ParamBinding<DfsphParams> DfsphSolver::param_binding() {
   ParamBinding<DfsphParams> b;
   b.add({"eta", "1", 0.01, 1e-6, 0.5,
-         "constant-density solver: target average compression (rho - rho0)/rho0 of the "
-         "predicted densities; the loop ends once the average falls below it (PCISPH's eta)"},
+         "constant-density solver: target compression (rho - rho0)/rho0 of the predicted "
+         "densities; the loop ends once the stopping error (stop_percentile; by default the "
+         "average) falls below it (PCISPH's eta)"},
         &DfsphParams::eta);
   b.add({"eta_divergence", "1", 0.01, 1e-6, 1,
          "divergence-free solver: target average density change per step, dt max(Drho/Dt, "
@@ -44,11 +45,12 @@ ParamBinding<DfsphParams> DfsphSolver::param_binding() {
   b.add({"warm_start", "1", 1, 0, 1,
          "1: each solver starts from the previous step's stiffness, as the paper does"},
         &DfsphParams::warm_start);
+  b.add(stop_percentile_spec(), &DfsphParams::stop_percentile);
   return b;
 }
 
 DfsphSolver::DfsphSolver(const DfsphParams& params, std::vector<MaterialId> materials)
-    : params_(params), materials_(std::move(materials)) {}
+    : params_(params), materials_(std::move(materials)), stopping_(params.stop_percentile) {}
 
 void DfsphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
@@ -102,15 +104,20 @@ std::pair<int, double> DfsphSolver::correct(World& world, const FluidView& f, co
     exec.run(owned, ClearStiffnessStage{stiffness});
   }
   exec.run(owned, measure);
-  // The stopping test sums in fixed point: the same iteration count for any thread count.
-  double error = average_compression(exec, fluid_.owned, f, rho_adv_.data());
+  // An exact stopping error (a fixed-point sum for the average): the same iteration count for
+  // any thread count. The divergence-free solver bounds the average, as the paper does.
+  auto stopping_error = [&] {
+    return solve.divergence ? average_compression(exec, fluid_.owned, f, rho_adv_.data())
+                            : stopping_(exec, fluid_.owned, f, rho_adv_.data());
+  };
+  double error = stopping_error();
   int iteration = 0;
   while (iteration < solve.max_iterations &&
          (iteration < solve.min_iterations || error > solve.eta)) {
     exec.run(owned, accumulate);
     exec.run(owned, update);
     exec.run(owned, measure);
-    error = average_compression(exec, fluid_.owned, f, rho_adv_.data());
+    error = stopping_error();
     ++iteration;
   }
   return {iteration, error};
@@ -160,7 +167,9 @@ void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
         world, f, density, dt,
         {false, params_.eta, params_.min_iterations, params_.max_iterations, density_stiffness_});
     stats_.iterations = iterations;
-    stats_.avg_density_error = error;
+    stats_.avg_density_error = stopping_.is_average()
+                                   ? error
+                                   : average_compression(exec, fluid_.owned, f, rho_adv_.data());
     stats_.max_density_error = max_compression(exec, fluid_.owned, f, rho_adv_.data());
   });
 

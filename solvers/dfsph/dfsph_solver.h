@@ -32,6 +32,7 @@
 
 #include "framework/params/param_binding.h"
 #include "framework/solver/solver.h"
+#include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_solver_state.h"
 
 namespace upf {
@@ -43,7 +44,8 @@ struct DfsphParams {
   int max_divergence_iterations = 0;
   bool divergence = true;  // run the divergence-free solver
   bool warm_start = true;
-  double omega = 0;  // relaxation of the Jacobi update
+  double omega = 0;            // relaxation of the Jacobi update
+  double stop_percentile = 0;  // the constant-density solver's StoppingError: 0 the average
 };
 
 class DfsphSolver final : public Solver {
@@ -76,6 +78,7 @@ class DfsphSolver final : public Solver {
   DfsphParams params_;
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;
+  StoppingError stopping_;
   FieldHandle<Real> density_stiffness_, divergence_stiffness_;
   // Per-step arrays over all particles, rewritten every step.
   std::vector<Real> factor_, boundary_divergence_, rho_adv_, k_, k_total_;

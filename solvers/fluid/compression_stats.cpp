@@ -1,5 +1,8 @@
 #include "solvers/fluid/compression_stats.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "solvers/fluid/fluid_stages.h"
 
 namespace upf {
@@ -14,8 +17,46 @@ double average_compression(const CpuExecutor& exec, const OwnedParticles& owned,
 
 double max_compression(const CpuExecutor& exec, const OwnedParticles& owned, const FluidView& f,
                        const Real* density) {
-  return double(
-      exec.max_of(owned.range(), CompressionValue{f.rest_density, f.material, density}));
+  return double(exec.max_of(owned.range(), CompressionValue{f.rest_density, f.material, density}));
+}
+
+namespace {
+// The compression of the k-th listed particle into out[k].
+struct ListedCompressionStage {
+  ParticleRange listed;
+  CompressionValue value;
+  Real* out;
+  UPF_HD void operator()(std::uint32_t k) const { out[k] = value(listed[k]); }
+};
+}  // namespace
+
+double StoppingError::operator()(const CpuExecutor& exec, const OwnedParticles& owned,
+                                 const FluidView& f, const Real* density) {
+  if (percentile_ <= 0) return average_compression(exec, owned, f, density);
+  if (percentile_ >= 100) return max_compression(exec, owned, f, density);
+  if (owned.empty()) return 0.0;
+  compressions_.resize(owned.size());
+  exec.run(
+      all_particles(owned.size()),
+      ListedCompressionStage{owned.range(), CompressionValue{f.rest_density, f.material, density},
+                             compressions_.data()});
+  // The value below which `percentile_` % of the particles lie (nearest rank).
+  const auto rank =
+      std::size_t(std::max(1.0, std::ceil(percentile_ / 100.0 * double(owned.size())))) - 1;
+  std::nth_element(compressions_.begin(), compressions_.begin() + std::ptrdiff_t(rank),
+                   compressions_.end());
+  return double(compressions_[rank]);
+}
+
+ParamSpec stop_percentile_spec() {
+  return {"stop_percentile",
+          "%",
+          0,
+          0,
+          100,
+          "which compression the stopping test bounds by eta: 0 the average (as the papers), "
+          "100 the largest particle's, in between that percentile of the particles' "
+          "compressions (docs/solvers.md, Density-error statistics)"};
 }
 
 }  // namespace upf

@@ -33,11 +33,11 @@ FluidView FluidSolverState::begin_step(const World& world) {
 
 void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density) {
   const CpuExecutor& exec = world.executor();
-  exec.run(owned.range(), DensityAndGradientsStage{f, fluid_gradient.data(),
-                                                   boundary_gradient.data(), density});
-  exec.run(owned.range(), GravityAndViscosityStage{f, density, fluid_gradient.data(),
-                                                   world.settings().gravity,
-                                                   other_acceleration.data()});
+  exec.run(owned.range(),
+           DensityAndGradientsStage{f, fluid_gradient.data(), boundary_gradient.data(), density});
+  exec.run(owned.range(),
+           GravityAndViscosityStage{f, density, fluid_gradient.data(), world.settings().gravity,
+                                    other_acceleration.data()});
   if (world.coupling().active(CouplingArray::LiquidForce))
     exec.run(owned.range(),
              AddForceOverMassStage{world.coupling()[CouplingArray::LiquidForce].data(), f.mass,
@@ -53,9 +53,8 @@ void FluidSolverState::predict_unowned(const World& world, const FluidView& f, V
 void FluidSolverState::integrate(World& world, Real dt) const {
   Particles& p = world.particles();
   world.executor().run(owned.range(),
-                       SymplecticEulerStage{other_acceleration.data(),
-                                            pressure_acceleration.data(), dt, p.velocity.data(),
-                                            p.position.data()});
+                       SymplecticEulerStage{other_acceleration.data(), pressure_acceleration.data(),
+                                            dt, p.velocity.data(), p.position.data()});
 }
 
 }  // namespace upf

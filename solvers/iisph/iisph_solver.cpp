@@ -13,8 +13,9 @@ namespace upf {
 ParamBinding<IisphParams> IisphSolver::param_binding() {
   ParamBinding<IisphParams> b;
   b.add({"eta", "1", 0.01, 1e-6, 0.5,
-         "target average compression (rho - rho0)/rho0 of the predicted densities: the Jacobi "
-         "iterations end once the average falls below it (PCISPH's eta)"},
+         "target compression (rho - rho0)/rho0 of the predicted densities: the Jacobi "
+         "iterations end once the stopping error (stop_percentile; by default the average) "
+         "falls below it (PCISPH's eta)"},
         &IisphParams::eta);
   b.add(
       {"min_iterations", "1", 2, 1, 1000, "Jacobi iterations always done (the paper: at least 2)"},
@@ -23,11 +24,12 @@ ParamBinding<IisphParams> IisphSolver::param_binding() {
         &IisphParams::max_iterations);
   b.add({"omega", "1", 0.5, 0.05, 1, "relaxation of the Jacobi update (the paper: 0.5)"},
         &IisphParams::omega);
+  b.add(stop_percentile_spec(), &IisphParams::stop_percentile);
   return b;
 }
 
 IisphSolver::IisphSolver(const IisphParams& params, std::vector<MaterialId> materials)
-    : params_(params), materials_(std::move(materials)) {}
+    : params_(params), materials_(std::move(materials)), stopping_(params.stop_percentile) {}
 
 void IisphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
@@ -90,8 +92,9 @@ void IisphSolver::step(World& world, Real dt, StageRunner& run) {
                           f, fluid_.fluid_gradient.data(), fluid_.boundary_gradient.data(), density,
                           inverse_diagonal_.data(), rho_adv_.data(), a_p, current, dt,
                           Real(params_.omega), predicted_.data(), next});
-      // The stopping test sums in fixed point: the same iteration count for any thread count.
-      error = average_compression(exec, fluid_.owned, f, predicted_.data());
+      // An exact stopping error (a fixed-point sum for the average): the same iteration count
+      // for any thread count.
+      error = stopping_(exec, fluid_.owned, f, predicted_.data());
       std::swap(current, next);
       ++iteration;
       if (iteration >= params_.min_iterations && error <= params_.eta) break;
@@ -101,7 +104,9 @@ void IisphSolver::step(World& world, Real dt, StageRunner& run) {
                                                    fluid_.boundary_gradient.data(), density,
                                                    pressure, a_p});
     stats_.iterations = iteration;
-    stats_.avg_density_error = error;
+    stats_.avg_density_error = stopping_.is_average()
+                                   ? error
+                                   : average_compression(exec, fluid_.owned, f, predicted_.data());
     stats_.max_density_error = max_compression(exec, fluid_.owned, f, predicted_.data());
   });
 

@@ -20,6 +20,7 @@
 
 #include "framework/params/param_binding.h"
 #include "framework/solver/solver.h"
+#include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_solver_state.h"
 
 namespace upf {
@@ -27,7 +28,8 @@ namespace upf {
 struct IisphParams {
   double eta = 0;  // target average compression
   int min_iterations = 0, max_iterations = 0;
-  double omega = 0;  // Jacobi relaxation
+  double omega = 0;            // Jacobi relaxation
+  double stop_percentile = 0;  // StoppingError: 0 the average
 };
 
 class IisphSolver final : public Solver {
@@ -47,6 +49,7 @@ class IisphSolver final : public Solver {
   IisphParams params_;
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;
+  StoppingError stopping_;
   // Per-step arrays over all particles, rewritten every step.
   std::vector<Real> inverse_diagonal_, boundary_divergence_, rho_adv_, predicted_, next_;
   std::vector<Vec3> v_adv_;

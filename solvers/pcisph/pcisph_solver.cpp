@@ -15,8 +15,8 @@ namespace upf {
 ParamBinding<PcisphParams> PcisphSolver::param_binding() {
   ParamBinding<PcisphParams> b;
   b.add({"eta", "1", 0.01, 1e-6, 0.5,
-         "target average compression (rho - rho0)/rho0: the correction loop ends once the "
-         "average falls below it"},
+         "target compression (rho - rho0)/rho0: the correction loop ends once the stopping "
+         "error (stop_percentile; by default the average compression) falls below it"},
         &PcisphParams::eta);
   b.add({"min_iterations", "1", 3, 1, 1000, "correction iterations always done"},
         &PcisphParams::min_iterations);
@@ -24,11 +24,13 @@ ParamBinding<PcisphParams> PcisphSolver::param_binding() {
          "correction iterations at most; not checked against min_iterations: if min_iterations "
          "> max_iterations, the loop stops at max_iterations"},
         &PcisphParams::max_iterations);
+  b.add(stop_percentile_spec(), &PcisphParams::stop_percentile);
   return b;
 }
 
 PcisphSolver::PcisphSolver(const PcisphParams& params, std::vector<MaterialId> materials)
     : eta_(params.eta),
+      stopping_(params.stop_percentile),
       min_iterations_(params.min_iterations),
       max_iterations_(params.max_iterations),
       materials_(std::move(materials)) {}
@@ -96,19 +98,21 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
     const PcisphCorrectPressureStage correct{f, x_star, delta, rho_star, pressure};
     const PcisphPressureAccelerationStage accelerate{f, pressure, fluid_.fluid_gradient.data(),
                                                      fluid_.boundary_gradient.data(), a_p};
-    double avg_error = 0;
+    double error = 0;
     int iteration = 0;
     while (iteration < max_iterations_) {
       exec.run(fluid_.owned.range(), predict);
       exec.run(fluid_.owned.range(), correct);
-      // The stopping test sums in fixed point: the same iteration count for any thread count.
-      avg_error = average_compression(exec, fluid_.owned, f, rho_star);
+      // An exact stopping error (a fixed-point sum for the average): the same iteration count
+      // for any thread count.
+      error = stopping_(exec, fluid_.owned, f, rho_star);
       exec.run(fluid_.owned.range(), accelerate);
       ++iteration;
-      if (iteration >= min_iterations_ && avg_error <= eta_) break;
+      if (iteration >= min_iterations_ && error <= eta_) break;
     }
     stats_.iterations = iteration;
-    stats_.avg_density_error = avg_error;
+    stats_.avg_density_error =
+        stopping_.is_average() ? error : average_compression(exec, fluid_.owned, f, rho_star);
     stats_.max_density_error = max_compression(exec, fluid_.owned, f, rho_star);
   });
 

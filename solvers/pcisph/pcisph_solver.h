@@ -16,6 +16,7 @@
 
 #include "framework/params/param_binding.h"
 #include "framework/solver/solver.h"
+#include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_solver_state.h"
 
 namespace upf {
@@ -23,6 +24,7 @@ namespace upf {
 struct PcisphParams {
   double eta = 0;  // target average compression
   int min_iterations = 0, max_iterations = 0;
+  double stop_percentile = 0;  // StoppingError: 0 the average
 };
 
 class PcisphSolver final : public Solver {
@@ -43,6 +45,7 @@ class PcisphSolver final : public Solver {
 
  private:
   double eta_;
+  StoppingError stopping_;
   int min_iterations_, max_iterations_;
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;

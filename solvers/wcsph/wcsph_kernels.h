@@ -77,8 +77,8 @@ struct WcsphPressureAccelerationStage {
   const Vec3* boundary_gradient;
   Vec3* a_pressure;
   UPF_HD void operator()(std::uint32_t i) const {
-    a_pressure[i] = wcsph_pressure_acceleration(f, density, pressure, fluid_gradient,
-                                                boundary_gradient[i], i);
+    a_pressure[i] =
+        wcsph_pressure_acceleration(f, density, pressure, fluid_gradient, boundary_gradient[i], i);
   }
 };
 
