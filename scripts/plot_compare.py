@@ -130,7 +130,41 @@ def plot_probe(report, runs, spec, path):
     finish(report, figure, [axes], spec["title"], path)
 
 
-PLOTTERS = {"density_error": plot_density_error, "dt": plot_dt, "probe": plot_probe}
+def plot_accuracy_cost(report, runs, spec, path):
+    """One point per solver: its largest density error against its cost. Lower left is better:
+    as accurate, for less wall time. Unstable runs are left out (their figures cover part of the
+    run) and named in a note."""
+    figure, (axes,) = new_figure(report)
+    left_out = []
+    for run in runs:
+        cost = run.row.get("wall_seconds_per_simulated_second") or 0
+        error = run.row.get("max_density_error")
+        if run.row["status"] != "completed" or cost <= 0 or error is None:
+            left_out.append(run.row["solver"])
+            continue
+        axes.plot([cost], [100.0 * error], marker="o", markersize=10, linestyle="none",
+                  color=run.colour, label=run.label())
+        axes.annotate(run.row["solver"], (cost, 100.0 * error), textcoords="offset points",
+                      xytext=(8, 6), color=run.colour)
+    if left_out:
+        axes.text(0.99, 0.01, "not shown (not completed): " + ", ".join(left_out),
+                  transform=axes.transAxes, ha="right", va="bottom", color="grey")
+    axes.set_xlabel("wall seconds per simulated second (cost)")
+    axes.set_ylabel("largest density error over the run [%]")
+    axes.set_xlim(left=0)
+    axes.set_ylim(bottom=0)
+    axes.grid(True, alpha=0.3)
+    if axes.get_legend_handles_labels()[0]:
+        axes.legend(loc="best")
+    figure.suptitle(spec["title"])
+    temporary = path.with_name(path.name + ".tmp")
+    figure.savefig(temporary, dpi=DPI, format="png")  # no bbox_inches: the size stays exact
+    plt.close(figure)
+    os.replace(temporary, path)
+
+
+PLOTTERS = {"density_error": plot_density_error, "dt": plot_dt, "probe": plot_probe,
+            "accuracy_cost": plot_accuracy_cost}
 
 
 def main(argv):

@@ -1,5 +1,6 @@
 // The comparison's PNG plots, one curve per solver: density error, time step, and each probe
-// against simulated time. scripts/plot_compare.py draws them with matplotlib from report.json and
+// against simulated time; and accuracy against cost, one point per solver (the largest density
+// error against wall seconds per simulated second). scripts/plot_compare.py draws them with matplotlib from report.json and
 // the runs' metrics.csv and probes.csv; this side names the files and checks they appeared.
 #pragma once
 
@@ -18,7 +19,7 @@ inline constexpr int kPlotHeightPx = 700;
 struct PlotSpec {
   std::string file;  // relative to the comparison's output directory
   std::string title;
-  std::string kind;   // "density_error", "dt" or "probe"
+  std::string kind;   // "density_error", "dt", "probe" or "accuracy_cost"
   std::string probe;  // kind "probe": the probe's name
 };
 

@@ -92,7 +92,8 @@ TEST_F(Compare, EverySolverGetsARowAReportAndPlots) {
   std::vector<std::string> args = {"1200", "700"};
   for (const auto& p : plots["files"])
     args.push_back((out() / p["file"].get<std::string>()).string());
-  EXPECT_EQ(args.size(), 2 + 2 + sample()["probes"].size()) << "density error, dt, each probe";
+  EXPECT_EQ(args.size(), 2 + 3 + sample()["probes"].size())
+      << "density error, dt, accuracy against cost, each probe";
   const fs::path log = dir_ / "check_png.log";
   const auto check = upf::run_python_script(
       fs::path(UPF_SOURCE_DIR) / "tests" / "cli" / "check_png.py", args, log);
