@@ -50,14 +50,6 @@ std::string format_number(double v) {
   return text;
 }
 
-// The unit of the fields every fluid solver writes; others are shown by name alone.
-std::string field_label(const std::string& field) {
-  if (field == "speed" || field == "velocity") return field + " (m/s)";
-  if (field == "density") return "density (kg/m3)";
-  if (field == "pressure") return "pressure (Pa)";
-  return field;
-}
-
 void draw_colour_bar(Image& image, const ColourScale& scale, int font) {
   const int bar_w = std::max(8, image.width() / 60);
   const int bar_h = image.height() / 2;
@@ -81,6 +73,13 @@ void draw_colour_bar(Image& image, const ColourScale& scale, int font) {
 }
 
 }  // namespace
+
+std::string field_label(const std::string& field) {
+  if (field == "speed" || field == "velocity") return field + " (m/s)";
+  if (field == "density") return "density (kg/m3)";
+  if (field == "pressure") return "pressure (Pa)";
+  return field;
+}
 
 bool frame_has_field(const PolyData& particles, const std::string& field) {
   if (field == "speed") return particles.point_array("velocity") != nullptr;

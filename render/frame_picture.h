@@ -49,14 +49,18 @@ bool frame_has_field(const PolyData& particles, const std::string& field);
 // The names a picture may be coloured by: type, material, speed, then the frame's fields.
 std::vector<std::string> colour_choices(const PolyData& particles);
 
-// The 1st and 99th percentiles of `field` over the moving (liquid and granular) particles;
-// nullopt when none has a finite value.
 // `range`, or 0.5 either side of it when it is a single value (a field constant everywhere),
 // so that colours stay defined.
 std::array<double, 2> widened_if_flat(std::array<double, 2> range);
 
+// The 1st and 99th percentiles of `field` over the moving (liquid and granular) particles;
+// nullopt when none has a finite value.
 std::optional<std::array<double, 2>> field_percentiles(const PolyData& particles,
                                                        const std::string& field);
+
+// The field's name with its unit, for the fields every fluid solver writes ("pressure (Pa)");
+// other fields by name alone.
+std::string field_label(const std::string& field);
 
 // A camera that shows every particle, with `up` as the picture's vertical (frame_box).
 Camera camera_for_particles(const PolyData& particles, const Eigen::Vector3d& up, double aspect);

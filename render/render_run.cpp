@@ -79,6 +79,8 @@ RenderOutcome render_run(const RenderRequest& request) {
   if (o.width) settings.width = *o.width;
   if (o.height) settings.height = *o.height;
   if (o.samples_per_axis) settings.samples_per_axis = *o.samples_per_axis;
+  // The scene's range belongs to the scene's color_by: another field gets its own range.
+  if (o.color_by && *o.color_by != settings.color_by) settings.range.reset();
   if (o.color_by) settings.color_by = *o.color_by;
   if (o.range) settings.range = o.range;
   if (o.walls) settings.walls = *o.walls;
@@ -92,6 +94,7 @@ RenderOutcome render_run(const RenderRequest& request) {
 
   const FrameData first = read_frame(frames.front());
   PictureContext context;
+  std::string range_source;
   context.settings = settings;
   context.title = facts.name;
   context.threads = request.threads;
@@ -106,6 +109,9 @@ RenderOutcome render_run(const RenderRequest& request) {
     }
     const auto range = settings.range.value_or(auto_range(frames, settings.color_by));
     context.scale = ColourScale{settings.color_by, range[0], range[1]};
+    range_source = o.range          ? "--range"
+                   : settings.range ? "the scene's render.range"
+                                    : "1st-99th percentile over the frames";
   }
   if (settings.camera) {
     context.camera = *settings.camera;
@@ -119,6 +125,7 @@ RenderOutcome render_run(const RenderRequest& request) {
   RenderOutcome outcome;
   outcome.color_by = settings.color_by;
   if (context.scale) outcome.range = std::array<double, 2>{context.scale->low, context.scale->high};
+  outcome.range_source = range_source;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const FrameData data = k == 0 ? first : read_frame(frames[k]);
     char name[64];

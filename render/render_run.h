@@ -38,6 +38,9 @@ struct RenderOutcome {
   std::string video_note;  // why there is no video, when there is none
   std::string color_by;
   std::optional<std::array<double, 2>> range;  // the field range used, when colouring by field
+  // Where the range came from: "--range", "the scene's render.range", or "1st-99th percentile
+  // over the frames".
+  std::string range_source;
   double seconds = 0;
 };
 

@@ -85,6 +85,14 @@ int run_command(const RunArgs& args) {
   }
   progress.finish();
   const std::string out = options.out_dir.string();
+  if (r.already_complete) {
+    std::printf(
+        "%s: the run in %s is already complete at t = %.4f s (step %llu); nothing to do.\n"
+        "extend it with: upf run --resume %s --end T (T > %.4f)\n",
+        scene.name.c_str(), out.c_str(), r.simulated_time, static_cast<unsigned long long>(r.steps),
+        out.c_str(), r.simulated_time);
+    return 0;
+  }
   if (r.status == "interrupted") {
     std::fprintf(stderr,
                  "interrupted at t = %.4f s (step %llu); checkpoint and summary written.\n"

@@ -15,8 +15,10 @@ void ProgressReporter::update(const RunProgress& p) {
   if (p.wall_seconds - last_print_ < interval && p.time < p.end_time) return;
   last_print_ = p.wall_seconds;
   const double fraction = p.end_time > 0 ? std::clamp(p.time / p.end_time, 0.0, 1.0) : 1.0;
-  const double steps_per_s = p.wall_seconds > 0 ? double(p.steps) / p.wall_seconds : 0.0;
-  const double eta = fraction > 0 ? p.wall_seconds * (1.0 - fraction) / fraction : 0.0;
+  const double steps_per_s =
+      p.wall_seconds > 0 ? double(p.steps_this_process) / p.wall_seconds : 0.0;
+  const double done = p.time - p.start_time;  // simulated by this process
+  const double eta = done > 0 ? p.wall_seconds * std::max(0.0, p.end_time - p.time) / done : 0.0;
   if (terminal_) {
     constexpr int kWidth = 30;
     const int filled = int(fraction * kWidth);

@@ -1,8 +1,11 @@
 #include "render_command.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 
 #include "framework/core/errors.h"
+#include "render/frame_picture.h"
 #include "render/render_run.h"
 
 namespace upf::app {
@@ -72,17 +75,27 @@ int render_command(const RenderArgs& args) {
       request.last_frame = b.empty() ? -1 : parse_whole(b, "--frames");
     }
   }
-  if (!args.quiet)
-    request.on_frame = [](int done, int total) {
-      std::fprintf(stderr, "\rrendering frame %d/%d", done, total);
-      if (done == total) std::fprintf(stderr, "\n");
+  if (!args.quiet) {
+    // A terminal gets one line rewritten in place; a pipe or a log gets plain lines, as from
+    // `upf run`, at most one every 10 frames.
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    request.on_frame = [terminal](int done, int total) {
+      if (terminal) {
+        std::fprintf(stderr, "\rrendering frame %d/%d", done, total);
+        if (done == total) std::fprintf(stderr, "\n");
+      } else if (done == total || done % 10 == 1) {
+        std::fprintf(stderr, "rendering frame %d/%d\n", done, total);
+      }
     };
+  }
   const render::RenderOutcome out = render::render_run(request);
   const std::string dir =
       out.pictures.empty() ? std::string() : out.pictures.front().parent_path().string();
   std::printf("pictures: %zu in %s (%.1f s, coloured by %s", out.pictures.size(), dir.c_str(),
-              out.seconds, out.color_by.c_str());
-  if (out.range) std::printf(" from %.4g to %.4g", (*out.range)[0], (*out.range)[1]);
+              out.seconds, render::field_label(out.color_by).c_str());
+  if (out.range)
+    std::printf(" from %.4g to %.4g: %s", (*out.range)[0], (*out.range)[1],
+                out.range_source.c_str());
   std::printf(")\n");
   if (out.video)
     std::printf("video: %s\n", out.video->string().c_str());

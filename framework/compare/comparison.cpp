@@ -37,6 +37,7 @@ Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry
     run.write_frames = options.write_frames;
     run.on_progress = options.on_progress;
     run.throw_on_instability = false;  // an unstable solver is a result of the comparison
+    run.final_checkpoint = false;
     CompareRow row{plan[i].solver, run_simulation(plan[i].scene, registry, run)};
     // Every run builds the same particles with the same threads: any row gives the counts.
     c.liquid_particles = row.result.liquid_particles;

@@ -1,5 +1,6 @@
 #include "framework/run/simulation_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -40,7 +41,7 @@ class RunRecorder {
         world_(world),
         result_(result),
         out_dir_(options.out_dir),
-        frame_interval_(1.0 / scene.output.fps),
+        fps_(scene.output.fps),
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
                 options.surface_mesher, options.resume),
         metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume),
@@ -71,11 +72,14 @@ class RunRecorder {
     metrics_.add(m, world_.last_step());
     totals_.add_step(world_.last_step(), result_);
     const double t = world_.time();
-    if (t >= next_frame_ * frame_interval_ - 1e-12 || at_end) {
+    if (t >= next_frame_time() - 1e-12 || at_end) {
       frame(particles, t);
-      while (next_frame_ * frame_interval_ <= t + 1e-12) ++next_frame_;
+      while (next_frame_time() <= t + 1e-12) ++next_frame_;
     }
   }
+
+  // Frame n falls at n / fps: the run loop stops a step there (World::step_towards).
+  double next_frame_time() const { return double(next_frame_) / fps_; }
 
   // The result's totals and summary.json.
   void finish(double wall_seconds) {
@@ -108,7 +112,7 @@ class RunRecorder {
   const World& world_;
   RunResult& result_;
   std::filesystem::path out_dir_;
-  double frame_interval_;
+  double fps_;
   std::int32_t next_frame_ = 1;
   FrameWriter frames_;
   MetricsLog metrics_;
@@ -176,6 +180,16 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     recorder.frame(world->particles(), 0.0);
   }
 
+  if (options.resume && world->time() >= end - 1e-12) {
+    // Complete already (its final checkpoint is at the end): nothing to simulate, nothing to
+    // rewrite. `--end` beyond it extends the run.
+    result.already_complete = true;
+    result.steps = world->step_count();
+    result.simulated_time = world->time();
+    return result;
+  }
+  const double start_time = world->time();
+  const std::uint64_t start_steps = world->step_count();
   Stopwatch wall;
   auto wall_seconds = [&] { return recorder.wall_seconds_before() + wall.elapsed_ms() / 1000.0; };
   // Writes the checkpoint, then continues from exactly what it wrote, as a resumed run would.
@@ -197,13 +211,16 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
 
   try {
     while (world->time() < end - 1e-12) {
-      // Land on the end time with evenly split steps, never a sliver of a step.
-      world->step(world->next_time_step_until(end));
+      // Steps land on every frame time, split evenly between frames (never a sliver of a step):
+      // the steps up to any time are the same whatever `end` is, so a preview's frames are the
+      // first frames of the full shot, and `--resume --end` extends a run bit for bit.
+      world->step_towards(std::min(end, recorder.next_frame_time()));
       const bool at_end = world->time() >= end - 1e-12;
       recorder.step(at_end);
       if (options.on_step) options.on_step(*world);
       if (options.on_progress)
-        options.on_progress({world->time(), end, world->step_count(), wall.elapsed_ms() / 1000.0});
+        options.on_progress({world->time(), end, world->step_count(), start_time,
+                             world->step_count() - start_steps, wall.elapsed_ms() / 1000.0});
       if (at_end) break;
       if (options.stop_requested && options.stop_requested()) {
         write_checkpoint_now();
@@ -222,6 +239,9 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     if (options.throw_on_instability) throw;
     return result;
   }
+  // The final state is a checkpoint too: `upf run --resume DIR --end T` extends a finished run
+  // exactly as a run planned to T from the start would have gone on.
+  if (options.final_checkpoint) write_checkpoint_now();
   recorder.finish(wall_seconds());
   return result;
 }

@@ -19,7 +19,10 @@ namespace upf {
 
 struct RunProgress {
   double time = 0, end_time = 0;
-  std::uint64_t steps = 0;
+  std::uint64_t steps = 0;  // since the run began, resumed parts included
+  // This process's share: a resumed run's rates and ETA count only what it did itself.
+  double start_time = 0;
+  std::uint64_t steps_this_process = 0;
   double wall_seconds = 0;
 };
 
@@ -40,6 +43,9 @@ struct RunOptions {
   // comparison keeps the figures of the steps that did succeed.
   bool throw_on_instability = true;
   CheckpointPolicy checkpoint;
+  // A completed run leaves its final state as the checkpoint, so that `--resume --end` can
+  // extend it; comparisons, whose runs are never resumed, turn it off.
+  bool final_checkpoint = true;
   // Kept at the head of every checkpoint for the caller: the command line stores the scene and
   // its options there, so `upf run --resume DIR` needs nothing else (read_checkpoint_header).
   std::string checkpoint_header;
@@ -56,6 +62,8 @@ struct RunOptions {
 
 struct RunResult {
   std::string status = "completed";  // or "unstable", or "interrupted" (resumable)
+  // A resumed run that had already reached its end: nothing was simulated or written.
+  bool already_complete = false;
   std::string failure;
   std::uint64_t steps = 0;
   double simulated_time = 0;  // unstable: the time the failed step reached

@@ -44,8 +44,8 @@ std::vector<ParamSpec> neighbour_setting_specs() {
 std::vector<ParamSpec> output_setting_specs() {
   return {
       {"fps", "1/s", 30, 0, 1e6,
-       "frames per simulated second; a frame is written at t = 0, at the first step that "
-       "reaches each multiple of 1/fps, and at the end",
+       "frames per simulated second; steps land exactly on every n / fps, where frame n is "
+       "written, and a last frame is written at the end",
        false, true},
   };
 }

@@ -107,6 +107,13 @@ double World::next_time_step_until(double end) const {
   return remaining / std::ceil(remaining / dt - 1e-9);
 }
 
+void World::step_towards(double stop) {
+  const double dt = next_time_step_until(stop);
+  const bool reaches_stop = dt >= stop - time_;
+  step(dt);
+  if (reaches_stop) time_ = stop;
+}
+
 void World::update_neighbours() {
   grid_.build(particles_, executor_);
   // Requests that share a query set share one scan of the candidates.

@@ -83,6 +83,10 @@ class World {
   double next_time_step_until(double end) const;
   // Advances by dt. Throws InstabilityError (with the last good state kept) when it blows up.
   void step(double dt);
+  // One step of next_time_step_until(stop); the step that reaches `stop` lands on it exactly
+  // (time() == stop, not a sum of rounded steps), so frames fall on n / fps to the bit and the
+  // steps after a stop do not depend on the rounding of the ones before.
+  void step_towards(double stop);
   // The stages of a step, once prepare() has run: the metrics columns (StepReport::stage_ms).
   std::vector<std::string> stage_names() const;
 
@@ -116,7 +120,7 @@ class World {
   NeighbourGrid grid_;
   std::vector<ListRequest> lists_;
   std::vector<std::unique_ptr<Solver>> solvers_;
-  std::vector<CouplingUse> solver_uses_;  // parallel to solvers_
+  std::vector<CouplingUse> solver_uses_;    // parallel to solvers_
   std::vector<StageRunner> stage_runners_;  // parallel to solvers_, made by prepare()
   CouplingArrays coupling_;
   std::vector<std::unique_ptr<BodySystem>> bodies_;

@@ -55,6 +55,30 @@ TEST_F(Render, RunWithRenderDrawsEveryFrameAtTheRequestedSize) {
   EXPECT_EQ(decode_picture(out / "render" / "frame_00000.png").width, 320);
 }
 
+// The sample's render section colours speed over [0, 4]: that range belongs to speed. Colouring
+// by pressure gets the pressure's own percentile range, printed with its unit (before, pressure
+// was drawn over [0, 4] Pa: one colour). Without a terminal, progress comes as plain lines.
+TEST_F(Render, TheScenesRangeBelongsToItsOwnField) {
+  const fs::path out = dir_ / "run";
+  ASSERT_EQ(run_upf("run " + small_run() + " --out " + out.string() + " -q -j 2").code, 0);
+  const Result own = run_upf("render " + out.string() + " --size 160x90 --no-video -q");
+  ASSERT_EQ(own.code, 0) << own.output;
+  EXPECT_NE(own.output.find("coloured by speed (m/s) from 0 to 4: the scene's render.range"),
+            std::string::npos)
+      << own.output;
+
+  const Result other =
+      run_upf("render " + out.string() + " --size 160x90 --no-video --color-by pressure");
+  ASSERT_EQ(other.code, 0) << other.output;
+  EXPECT_NE(other.output.find("coloured by pressure (Pa) from "), std::string::npos)
+      << other.output;
+  EXPECT_NE(other.output.find("1st-99th percentile over the frames"), std::string::npos)
+      << other.output;
+  EXPECT_EQ(other.output.find("from 0 to 4"), std::string::npos) << other.output;
+  EXPECT_NE(other.output.find("rendering frame 1/3\n"), std::string::npos) << other.output;
+  EXPECT_EQ(other.output.find('\r'), std::string::npos) << other.output;
+}
+
 TEST_F(Render, BadRequestsAreBadInputNamingTheCulprit) {
   const fs::path out = dir_ / "run";
   ASSERT_EQ(run_upf("run " + small_run() + " --out " + out.string() + " -q --end 0.05").code, 0);
