@@ -292,6 +292,18 @@ std::vector<NamedBodyState> RigidBodySystem::body_states() const {
   return states;
 }
 
+bool RigidBodySystem::set_velocity(std::size_t index, const Eigen::Vector3d& velocity,
+                                   const Eigen::Vector3d& angular_velocity) {
+  if (index >= bodies_.size() || bodies_[index].source.kind != BodyKind::Dynamic) return false;
+  Body& b = bodies_[index];
+  b.rigid->setLinearVelocity(to_bt(velocity));
+  b.rigid->setAngularVelocity(to_bt(angular_velocity));
+  b.rigid->setInterpolationLinearVelocity(b.rigid->getLinearVelocity());
+  b.rigid->setInterpolationAngularVelocity(b.rigid->getAngularVelocity());
+  read_states();
+  return true;
+}
+
 std::vector<MeshPiece> RigidBodySystem::surface_meshes() const {
   // Each body's mesh in its current pose: x = X + R r0 over the body-frame vertices.
   std::vector<MeshPiece> pieces;

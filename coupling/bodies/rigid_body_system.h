@@ -71,6 +71,9 @@ class RigidBodySystem : public BodySystem {
   double max_time_step(const World& world) const override;
   std::vector<MeshPiece> surface_meshes() const override;
   std::vector<NamedBodyState> body_states() const override;
+  // Dynamic bodies only: a static or kinematic body's motion is prescribed.
+  bool set_velocity(std::size_t index, const Eigen::Vector3d& velocity,
+                    const Eigen::Vector3d& angular_velocity) override;
   void save_state(StateWriter& out) const override;
   void restore_state(StateReader& in) override;
 

@@ -80,6 +80,9 @@ class RunRecorder {
 
   // Frame n falls at n / fps: the run loop stops a step there (World::step_towards).
   double next_frame_time() const { return double(next_frame_) / fps_; }
+  // A run that starts from a world already stepped (Simulation.run in Python): its first frame is
+  // the state now, the next one the first n / fps after it.
+  void start_at(double time) { next_frame_ = std::int32_t(std::floor(time * fps_ + 1e-9)) + 1; }
 
   // The result's totals and summary.json.
   void finish(double wall_seconds) {
@@ -153,43 +156,48 @@ std::string read_checkpoint_header(const std::filesystem::path& run_dir) {
 
 RunResult run_simulation(const SceneDescription& scene, const Registry& registry,
                          const RunOptions& options) {
-  ensure_directory(options.out_dir);
-  const std::filesystem::path checkpoint_path = options.out_dir / kCheckpointFileName;
   auto world = build_world(scene, registry, options.threads);
   world->prepare();
+  return run_world(*world, scene, options);
+}
+
+RunResult run_world(World& world, const SceneDescription& scene, const RunOptions& options) {
+  ensure_directory(options.out_dir);
+  const std::filesystem::path checkpoint_path = options.out_dir / kCheckpointFileName;
   // Before anything is written: a misspelt field stops the run with nothing but the directory.
-  std::vector<std::string> fields = check_output_fields(scene, world->particles());
+  std::vector<std::string> fields = check_output_fields(scene, world.particles());
   if (!options.resume && !options.scene_text.empty())
     write_file_atomically(options.out_dir / "scene.json",
                           [&](std::ostream& out) { out << options.scene_text; });
   const double end = options.end_time.value_or(scene.world.time.end);
 
   RunResult result;
-  result.liquid_particles = world->particles().count(ParticleType::Liquid);
-  result.total_particles = world->particles().size();
-  result.threads = world->executor().threads();
-  RunRecorder recorder(scene, options, *world, std::move(fields), result);
+  result.liquid_particles = world.particles().count(ParticleType::Liquid);
+  result.total_particles = world.particles().size();
+  result.threads = world.executor().threads();
+  RunRecorder recorder(scene, options, world, std::move(fields), result);
   if (options.resume) {
     StateReader in = read_checkpoint(checkpoint_path);
     (void)read_header(in);
-    world->restore_state(in);
+    world.restore_state(in);
     in.section("run");
     recorder.restore_state(in);
     if (!in.at_end()) in.fail("unread bytes at the end");
   } else {
-    recorder.frame(world->particles(), 0.0);
+    recorder.start_at(world.time());
+    recorder.frame(world.particles(), world.time());
   }
 
-  if (options.resume && world->time() >= end - 1e-12) {
+  if (options.resume && world.time() >= end - 1e-12) {
     // Complete already (its final checkpoint is at the end): nothing to simulate, nothing to
     // rewrite. `--end` beyond it extends the run.
     result.already_complete = true;
-    result.steps = world->step_count();
-    result.simulated_time = world->time();
+    result.steps = world.step_count();
+    result.simulated_time = world.time();
     return result;
   }
-  const double start_time = world->time();
-  const std::uint64_t start_steps = world->step_count();
+  const double start_time = world.time();
+  const std::uint64_t start_steps = world.step_count();
   Stopwatch wall;
   auto wall_seconds = [&] { return recorder.wall_seconds_before() + wall.elapsed_ms() / 1000.0; };
   // Writes the checkpoint, then continues from exactly what it wrote, as a resumed run would.
@@ -197,7 +205,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     StateWriter out;
     out.section("header");
     out.put_string(options.checkpoint_header);
-    world->save_state(out);
+    world.save_state(out);
     out.section("run");
     recorder.save_state(out, wall_seconds());
     write_checkpoint(checkpoint_path, out.bytes());
@@ -205,22 +213,22 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
     result.checkpoint_file = checkpoint_path;
     StateReader again(out.bytes(), checkpoint_path.string());
     (void)read_header(again);
-    world->restore_state(again);
+    world.restore_state(again);
   };
-  CheckpointSchedule checkpoints(options.checkpoint, world->time());
+  CheckpointSchedule checkpoints(options.checkpoint, world.time());
 
   try {
-    while (world->time() < end - 1e-12) {
+    while (world.time() < end - 1e-12) {
       // Steps land on every frame time, split evenly between frames (never a sliver of a step):
       // the steps up to any time are the same whatever `end` is, so a preview's frames are the
       // first frames of the full shot, and `--resume --end` extends a run bit for bit.
-      world->step_towards(std::min(end, recorder.next_frame_time()));
-      const bool at_end = world->time() >= end - 1e-12;
+      world.step_towards(std::min(end, recorder.next_frame_time()));
+      const bool at_end = world.time() >= end - 1e-12;
       recorder.step(at_end);
-      if (options.on_step) options.on_step(*world);
+      if (options.on_step) options.on_step(world);
       if (options.on_progress)
-        options.on_progress({world->time(), end, world->step_count(), start_time,
-                             world->step_count() - start_steps, wall.elapsed_ms() / 1000.0});
+        options.on_progress({world.time(), end, world.step_count(), start_time,
+                             world.step_count() - start_steps, wall.elapsed_ms() / 1000.0});
       if (at_end) break;
       if (options.stop_requested && options.stop_requested()) {
         write_checkpoint_now();
@@ -228,11 +236,11 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
         recorder.finish(wall_seconds());
         return result;
       }
-      if (checkpoints.due(wall.elapsed_ms() / 1000.0, world->time())) write_checkpoint_now();
+      if (checkpoints.due(wall.elapsed_ms() / 1000.0, world.time())) write_checkpoint_now();
     }
   } catch (const InstabilityError& e) {
     // The state before the failed step is the last good one: keep it on disk, then report.
-    recorder.frame(world->last_good(), world->time() - world->last_step().dt);
+    recorder.frame(world.last_good(), world.time() - world.last_step().dt);
     result.status = "unstable";
     result.failure = e.what();
     recorder.finish(wall_seconds());

@@ -90,4 +90,9 @@ std::string read_checkpoint_header(const std::filesystem::path& run_dir);
 RunResult run_simulation(const SceneDescription& scene, const Registry& registry,
                          const RunOptions& options);
 
+// The same run over a world the caller built from `scene` and prepared (the Python module's
+// Simulation.run): from the world's current time to the end, its first frame the state now.
+// With options.resume the world is first restored from the checkpoint in out_dir.
+RunResult run_world(World& world, const SceneDescription& scene, const RunOptions& options);
+
 }  // namespace upf

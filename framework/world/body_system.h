@@ -57,6 +57,13 @@ class BodySystem {
   // What the run writes and viewers draw (framework/run/body_outputs.h); the system itself
   // writes nothing. Every body's state now, in a fixed order: the rows of bodies.csv.
   virtual std::vector<NamedBodyState> body_states() const = 0;
+  // Sets body `index`'s (body_states() order) velocity and angular velocity (world axes, about
+  // its frame origin) from now on: for scripts and the Python module. False for a body whose
+  // motion is not the system's to change (static, or prescribed), or an index out of range.
+  virtual bool set_velocity(std::size_t /*index*/, const Eigen::Vector3d& /*velocity*/,
+                            const Eigen::Vector3d& /*angular_velocity*/) {
+    return false;
+  }
   // The bodies' surfaces in their current pose, one piece per body in body_states() order;
   // empty for a system without meshes.
   virtual std::vector<MeshPiece> surface_meshes() const { return {}; }

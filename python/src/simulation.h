@@ -1,0 +1,65 @@
+// The Python module's simulation: a scene's world, stepped on the scene's frame clock so that
+// stepping from Python takes exactly the steps `upf run` takes, and run into an output folder
+// through the same run loop (run_world). It owns the world; Python's views of its arrays check
+// generation() before every use, and every step, run or restore moves it on.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "framework/run/simulation_run.h"
+#include "framework/scene/scene.h"
+#include "framework/solver/registry.h"
+#include "framework/world/world.h"
+
+namespace upf::python {
+
+class Simulation {
+ public:
+  // Builds the world (particles, solvers, bodies); it is prepared on first use, so that forces
+  // can still be added (add_solver).
+  Simulation(SceneDescription scene, std::shared_ptr<const Registry> registry, int threads,
+             std::string scene_text);
+
+  const SceneDescription& scene() const { return scene_; }
+  // The prepared world.
+  World& world();
+  bool prepared() const { return prepared_; }
+  // A solver added to the world before it is prepared (Python forces). InputError once prepared.
+  void add_solver(std::unique_ptr<Solver> solver, CouplingUse use);
+
+  // One step towards the next frame time (World::step_towards): the steps `upf run` takes.
+  void step();
+  // Steps until time() == t, stopping on every frame time n / fps on the way as `upf run` does.
+  void advance_to(double t);
+  // Runs into `out` (everything `upf run` writes) from the current time to `end` (default: the
+  // scene's end).
+  RunResult run(const std::filesystem::path& out, std::optional<double> end, bool frames);
+
+  double time() const { return world_->time(); }
+  std::uint64_t step_count() const { return world_->step_count(); }
+  // Moves on whenever the particle arrays may move or change meaning.
+  std::uint64_t generation() const { return generation_; }
+  // After an exception inside a step the world is half-stepped: every later step refuses.
+  const std::string& failure() const { return failure_; }
+
+ private:
+  double next_frame_time() const;
+  // work(world) on the prepared world. An exception out of it leaves the world half-stepped: it
+  // is remembered, and every later step or run refuses.
+  template <class Work>
+  auto guarded(Work&& work);
+
+  SceneDescription scene_;
+  std::shared_ptr<const Registry> registry_;
+  std::string scene_text_;
+  std::unique_ptr<World> world_;
+  bool prepared_ = false;
+  std::uint64_t generation_ = 0;
+  std::string failure_;
+};
+
+}  // namespace upf::python
