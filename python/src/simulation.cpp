@@ -71,11 +71,13 @@ void Simulation::step() {
   guarded([&](World& w) { w.step_towards(next_frame_time()); });
 }
 
-void Simulation::advance_to(double t) {
+void Simulation::advance_to(double t, const std::function<void()>& between_steps) {
   if (!std::isfinite(t)) throw InputError("advance_to", "the time must be finite");
   world();
-  while (world_->time() < t - 1e-12)
+  while (world_->time() < t - 1e-12) {
     guarded([&](World& w) { w.step_towards(std::min(t, next_frame_time())); });
+    if (between_steps) between_steps();
+  }
 }
 
 RunResult Simulation::run(const std::filesystem::path& out, std::optional<double> end,

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,7 +35,9 @@ class Simulation {
   // One step towards the next frame time (World::step_towards): the steps `upf run` takes.
   void step();
   // Steps until time() == t, stopping on every frame time n / fps on the way as `upf run` does.
-  void advance_to(double t);
+  // `between_steps` runs after each step (Python checks for Ctrl-C there); what it throws ends
+  // the call with the world whole, at the step it reached.
+  void advance_to(double t, const std::function<void()>& between_steps = {});
   // Runs into `out` (everything `upf run` writes) from the current time to `end` (default: the
   // scene's end).
   RunResult run(const std::filesystem::path& out, std::optional<double> end, bool frames);

@@ -131,8 +131,16 @@ void bind_simulation(py::module_& m) {
                              [](const Simulation& s) { return s.scene().world.time.end; })
       .def_property_readonly("spacing", [](const Simulation& s) { return s.scene().world.spacing; })
       .def("step", &Simulation::step, py::call_guard<py::gil_scoped_release>())
-      .def("advance_to", &Simulation::advance_to, py::arg("time"),
-           py::call_guard<py::gil_scoped_release>())
+      .def(
+          "advance_to",
+          [](Simulation& s, double t) {
+            // Ctrl-C between steps ends a long advance with KeyboardInterrupt, the world whole.
+            s.advance_to(t, [] {
+              py::gil_scoped_acquire gil;
+              if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            });
+          },
+          py::arg("time"), py::call_guard<py::gil_scoped_release>())
       .def(
           "run",
           [](Simulation& s, const std::filesystem::path& out, std::optional<double> end,

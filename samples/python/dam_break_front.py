@@ -59,7 +59,11 @@ def main():
         return
     data = np.array(rows)
     fig, ax = plt.subplots(figsize=(5, 3.5), dpi=120)
-    ax.plot(data[:, 2], data[:, 3], label=f"upf ({sim.name})")
+    ax.plot(data[:, 2], data[:, 3], marker=".", label=f"upf ({sim.name})")
+    containers = scene.get("containers", [])
+    if containers:  # the front stops at the tank's far wall
+        wall = (containers[0]["max"][0] - block["min"][0]) / width
+        ax.axhline(wall, color="grey", linestyle="--", linewidth=1, label="far wall")
     ax.set_xlabel("T = t sqrt(2g/a)")
     ax.set_ylabel("Z = front / a")
     ax.set_title("Dam-break surge front")

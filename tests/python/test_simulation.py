@@ -250,3 +250,20 @@ def test_a_python_force_on_a_bodys_particles_holds_it_up(source_dir):
     [crate] = sim.bodies()
     assert abs(crate["velocity"][1]) < 1e-3  # free fall: 0.98 m/s
     assert crate["position"][1] == pytest.approx(0.9, abs=1e-4)
+
+
+def test_ctrl_c_ends_a_long_advance_between_steps():
+    import os
+    import signal
+    import threading
+
+    scene = free_particle_scene(fixed_dt=1e-4)
+    scene["gravity"] = [0, 0, 0]
+    sim = upf.Simulation.from_dict(scene)
+    threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+    with pytest.raises(KeyboardInterrupt):
+        sim.advance_to(1000.0)  # 10 million steps
+    assert 0 < sim.time < 1000.0
+    steps = sim.step_count
+    sim.step()  # the world is whole: it goes on
+    assert sim.step_count == steps + 1
