@@ -107,6 +107,9 @@ int run_command(const RunArgs& args) {
       scene.name.c_str(), static_cast<unsigned long long>(r.steps), r.simulated_time,
       r.wall_seconds, r.liquid_particles, r.fluid_particle_steps_per_second, r.mean_iterations);
   std::printf("output: %s (particles.pvd, metrics.csv, probes.csv, summary.json)\n", out.c_str());
+  if (r.replaced_files > 0)
+    std::printf("(it replaced an earlier run there: %zu of its files were removed first)\n",
+                r.replaced_files);
   if (args.render) {
     RenderArgs render = args.render_args;
     render.run_dir = out;

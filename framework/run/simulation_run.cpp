@@ -12,6 +12,7 @@
 #include "framework/run/metrics_log.h"
 #include "framework/run/output_fields.h"
 #include "framework/run/probes.h"
+#include "framework/run/run_directory.h"
 #include "framework/run/run_totals.h"
 #include "framework/scene/scene_builder.h"
 
@@ -166,12 +167,16 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
   const std::filesystem::path checkpoint_path = options.out_dir / kCheckpointFileName;
   // Before anything is written: a misspelt field stops the run with nothing but the directory.
   std::vector<std::string> fields = check_output_fields(scene, world.particles());
+  // The checks passed: an earlier run in the same directory goes now, not before (a refused run
+  // leaves it as it was).
+  const std::size_t replaced = options.resume ? 0 : clear_earlier_run(options.out_dir);
   if (!options.resume && !options.scene_text.empty())
     write_file_atomically(options.out_dir / "scene.json",
                           [&](std::ostream& out) { out << options.scene_text; });
   const double end = options.end_time.value_or(scene.world.time.end);
 
   RunResult result;
+  result.replaced_files = replaced;
   result.liquid_particles = world.particles().count(ParticleType::Liquid);
   result.total_particles = world.particles().size();
   result.threads = world.executor().threads();

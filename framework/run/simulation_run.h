@@ -79,6 +79,8 @@ struct RunResult {
   double max_density_error = 0;
   double fluid_particle_steps_per_second = 0;
   std::vector<std::pair<std::string, double>> final_probes;
+  // Files of an earlier run in the same directory, removed before this one wrote anything.
+  std::size_t replaced_files = 0;
   int checkpoints = 0;                    // written by this process
   std::filesystem::path checkpoint_file;  // the last one written, if any
 };

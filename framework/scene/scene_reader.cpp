@@ -1,6 +1,7 @@
 #include "framework/scene/scene_reader.h"
 
 #include <unistd.h>
+#include <cctype>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -457,31 +458,63 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   return scene;
 }
 
+namespace {
+// "file:line:column" of byte `offset` (0-based) of `text`.
+std::string place_in(const std::filesystem::path& path, const std::string& text,
+                     std::size_t offset) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return path.string() + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+// The first place where `number` stands as a whole JSON number token, else the text's end.
+std::size_t find_number(const std::string& text, const std::string& number) {
+  auto is_number_char = [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' ||
+           c == '+' || c == '-';
+  };
+  for (std::size_t at = text.find(number); at != std::string::npos;
+       at = text.find(number, at + 1)) {
+    const bool starts = at == 0 || !is_number_char(text[at - 1]);
+    const std::size_t end = at + number.size();
+    if (starts && (end == text.size() || !is_number_char(text[end]))) return at;
+  }
+  return text.size();
+}
+}  // namespace
+
 SceneDescription load_scene_file(const std::filesystem::path& path, const Registry& registry) {
   std::ifstream file(path);
   if (!file) {
     throw InputError(path.string(), std::filesystem::exists(path) ? "cannot be read (permissions?)"
                                                                   : "no such file");
   }
-  std::stringstream text;
-  text << file.rdbuf();
+  std::stringstream buffer;
+  buffer << file.rdbuf();
+  const std::string text = buffer.str();
   json doc;
   try {
-    doc = json::parse(text.str());
+    doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    // Turn the byte offset into a line and column the user can find.
-    const std::string s = text.str();
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < s.size(); ++i) {
-      if (s[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
-    throw InputError(path.string() + ":" + std::to_string(line) + ":" + std::to_string(column),
+    // The byte offset as a line and column the user can find (e.byte is 1-based).
+    throw InputError(place_in(path, text, e.byte == 0 ? 0 : e.byte - 1),
                      std::string("invalid JSON: ") + e.what());
+  } catch (const json::out_of_range& e) {
+    // A number beyond a double (1e400): the parser names the token but not where it stands.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string number =
+        open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    throw InputError(place_in(path, text, number.empty() ? 0 : find_number(text, number)),
+                     "the number " + (number.empty() ? std::string("here") : number) +
+                         " is out of range: a double holds magnitudes up to about 1.8e308");
   }
   return read_scene(doc, registry, path.string());
 }

@@ -1,6 +1,8 @@
 // The `upf` program as a user meets it: bad input of every class gives exit code 2 and names the
 // culprit (file and JSON path), an unstable run gives exit code 3 after writing the last good
 // frame, and a good run writes its outputs.
+#include <iterator>
+
 #include "tests/cli/cli_support.h"
 
 namespace {
@@ -62,6 +64,16 @@ TEST_F(Cli, MissingFileAndBrokenJson) {
   EXPECT_NE(r.output.find("broken.json:3:"), std::string::npos) << r.output;
 }
 
+TEST_F(Cli, NumberBeyondADoubleIsNamedWithItsPlace) {
+  // 1e400 overflows a double: the JSON parser names the token, not where it stands.
+  const fs::path scene = dir_ / "huge.json";
+  std::ofstream(scene) << "{\n  \"name\": \"x\",\n  \"particle_spacing\": 1e400\n}";
+  const Result r = run_upf("validate " + scene.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("huge.json:3:23"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1e400 is out of range"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, RunWritesOutputs) {
   auto doc = sample();
   doc["time"]["end"] = 0.1;
@@ -75,6 +87,30 @@ TEST_F(Cli, RunWritesOutputs) {
   const auto s = nlohmann::json::parse(summary);
   EXPECT_EQ(s["status"], "completed");
   EXPECT_NEAR(s["simulated_time_s"].get<double>(), 0.1, 1e-9);
+}
+
+TEST_F(Cli, ARunIntoAnEarlierRunsDirectoryReplacesItsFiles) {
+  // Importers read every frame in frames/: a shorter second run must not leave the first run's
+  // later frames behind. The user's own files stay.
+  auto doc = sample();
+  const fs::path out = dir_ / "out";
+  doc["time"]["end"] = 0.2;
+  ASSERT_EQ(run_upf("run " + write(doc) + " --out " + out.string() + " --threads 2 -q").code, 0);
+  ASSERT_TRUE(fs::exists(out / "frames/frame_00006.vtp"));
+  std::ofstream(out / "notes.txt") << "mine";
+  std::ofstream(out / "frames" / "frame_notes.txt") << "mine too";
+  doc["time"]["end"] = 0.1;
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " --threads 2");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("replaced an earlier run there"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(out / "frames/frame_00003.vtp"));
+  for (const char* stale : {"frames/frame_00004.vtp", "frames/frame_00006.vtp"})
+    EXPECT_FALSE(fs::exists(out / stale)) << stale;
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
+  EXPECT_TRUE(fs::exists(out / "frames" / "frame_notes.txt"));
+  std::ifstream pvd(out / "particles.pvd");
+  const std::string series((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(series.find("frame_00004"), std::string::npos);
 }
 
 TEST_F(Cli, OutputFieldNoSolverExportsStopsTheRunBeforeWriting) {
