@@ -49,10 +49,7 @@ py::array particle_array(Particles& p, const std::string& name, py::handle owner
   if (name == "body") return scalar_view(p.body.data(), n, owner, w);
   if (name == "boundary_volume") return scalar_view(p.boundary_volume.data(), n, owner, w);
   if (auto* v = p.find_vector(name)) return vector_view(*v, owner, true);
-  if (p.find_scalar(name)) {
-    const auto& values = *p.find_scalar(name);
-    return scalar_view(values.data(), values.size(), owner, true);
-  }
+  if (const auto* s = p.find_scalar(name)) return scalar_view(s->data(), s->size(), owner, true);
   std::string known;
   for (const auto& k : particle_array_names(p)) known += (known.empty() ? "" : ", ") + k;
   throw py::key_error("no particle array named '" + name + "' (there are: " + known + ")");

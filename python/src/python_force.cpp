@@ -83,11 +83,8 @@ void PythonForce::apply(World& world, Real dt) {
                                     py::arg("type") = gather<std::uint8_t>(p.type, chosen_),
                                     py::arg("time") = world.time(), py::arg("dt") = double(dt));
   py::object result = function_(state);
-  py::array_t<double, py::array::c_style | py::array::forcecast> force;
-  try {
-    force = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(result);
-  } catch (const py::error_already_set&) {
-  }
+  // ensure() gives a null array (no exception) for what NumPy cannot convert.
+  const auto force = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(result);
   const py::ssize_t n = py::ssize_t(chosen_.size());
   const bool per_particle =
       force && force.ndim() == 2 && force.shape(0) == n && force.shape(1) == 3;

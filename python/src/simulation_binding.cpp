@@ -41,24 +41,15 @@ std::string read_text(const std::filesystem::path& path) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-// A scene's text as given: a file's bytes, or the dict's JSON. Parsed and checked as `upf run`
-// does; `solver` replaces every liquid material's solver (upf run --solver).
-std::unique_ptr<Simulation> make_simulation(const std::string& text, const std::string& source,
-                                            const std::filesystem::path* file,
+// A simulation of `scene` read from `text` (kept as the run's scene.json); `solver` replaces
+// every liquid material's solver (upf run --solver).
+std::unique_ptr<Simulation> make_simulation(SceneDescription scene, std::string text,
                                             const RegistryHandle& registry, int threads,
                                             const std::string& solver) {
   if (threads < 0) throw InputError("threads", "must be 0 (OpenMP's default) or more");
-  SceneDescription scene;
-  if (file) {
-    scene = load_scene_file(*file, *registry.registry);
-  } else {
-    const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
-    if (document.is_discarded())
-      throw InputError(source, "not valid JSON (NaN and infinities have no JSON form)");
-    scene = read_scene(document, *registry.registry, source);
-  }
   if (!solver.empty()) scene = with_solver(scene, *registry.registry, solver);
-  return std::make_unique<Simulation>(std::move(scene), registry.registry, threads, text);
+  return std::make_unique<Simulation>(std::move(scene), registry.registry, threads,
+                                      std::move(text));
 }
 
 py::dict body_dict(const NamedBodyState& b) {
@@ -105,20 +96,20 @@ void bind_simulation(py::module_& m) {
           "from_file",
           [](const std::filesystem::path& path, int threads, const std::string& solver,
              const RegistryHandle& registry) {
-            // load_scene_file reports a missing file or a syntax error with the file's name.
-            std::string text;
-            try {
-              text = read_text(path);
-            } catch (const InputError&) {
-            }
-            return make_simulation(text, path.string(), &path, registry, threads, solver);
+            // load_scene_file names the file in every error, a missing one included.
+            SceneDescription scene = load_scene_file(path, *registry.registry);
+            return make_simulation(std::move(scene), read_text(path), registry, threads, solver);
           },
           py::arg("path"), py::arg("threads"), py::arg("solver"), py::arg("registry"))
       .def_static(
           "from_text",
           [](const std::string& text, const std::string& source, int threads,
              const std::string& solver, const RegistryHandle& registry) {
-            return make_simulation(text, source, nullptr, registry, threads, solver);
+            const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
+            if (document.is_discarded())
+              throw InputError(source, "not valid JSON (NaN and infinities have no JSON form)");
+            SceneDescription scene = read_scene(document, *registry.registry, source);
+            return make_simulation(std::move(scene), text, registry, threads, solver);
           },
           py::arg("text"), py::arg("source"), py::arg("threads"), py::arg("solver"),
           py::arg("registry"))
