@@ -17,6 +17,7 @@
 #include "framework/core/errors.h"
 #include "framework/output/liquid_surface.h"
 #include "framework/run/simulation_run.h"
+#include "framework/scene/scene_overrides.h"
 #include "framework/scene/scene_reader.h"
 #include "framework/scene/solver_override.h"
 #include "framework/solver/registry.h"
@@ -30,6 +31,25 @@ std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the scene file");
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+// A scene file as it will run: read, the --set overrides applied, checked; and its text (the
+// file's own bytes, or the overridden document) for scene.json and the checkpoint.
+struct LoadedScene {
+  SceneDescription scene;
+  std::string text;
+};
+LoadedScene load_with_overrides(const std::string& file, const std::vector<std::string>& sets,
+                                const Registry& registry) {
+  if (sets.empty()) {
+    SceneDescription scene = load_scene_file(file, registry);
+    return {std::move(scene), read_text(file)};
+  }
+  nlohmann::json document = read_scene_json(file);
+  std::vector<SceneOverride> overrides;
+  for (const std::string& s : sets) overrides.push_back(parse_override(s));
+  apply_overrides(document, overrides);
+  SceneDescription scene = read_scene(document, registry, file);
+  return {std::move(scene), document.dump(2) + "\n"};
 }
 }  // namespace
 
@@ -49,13 +69,14 @@ int run_command(const RunArgs& args) {
     if (document.is_discarded()) throw InputError(where, "the checkpoint's scene is not JSON");
     scene = read_scene(document, registry, run.scene_source);
   } else {
-    run.scene_text = read_text(args.scene);
+    LoadedScene loaded = load_with_overrides(args.scene, args.sets, registry);
+    run.scene_text = std::move(loaded.text);
     run.scene_source = args.scene;
     run.solver = args.solver;
     run.end_time = args.end_time;
     run.no_frames = args.no_frames;
     run.checkpoint_every = args.checkpoint_every;
-    scene = load_scene_file(args.scene, registry);
+    scene = std::move(loaded.scene);
     if (out_dir.empty()) out_dir = std::filesystem::path("out") / scene.name;
   }
   if (!run.solver.empty()) scene = with_solver(scene, registry, run.solver);
@@ -132,7 +153,7 @@ std::filesystem::path plot_script(const CompareArgs& args) {
 
 int compare_command(const CompareArgs& args) {
   const Registry registry = make_app_registry();
-  const SceneDescription scene = load_scene_file(args.scene, registry);
+  const SceneDescription scene = load_with_overrides(args.scene, args.sets, registry).scene;
   const auto plan = plan_comparison(
       scene, registry, args.solvers_given ? args.solvers : solvers_for_scene(scene, registry));
 
@@ -177,12 +198,12 @@ int compare_command(const CompareArgs& args) {
   return 0;
 }
 
-int validate_command(const std::vector<std::string>& files) {
+int validate_command(const std::vector<std::string>& files, const std::vector<std::string>& sets) {
   const Registry registry = make_app_registry();
   int bad = 0;
   for (const auto& f : files) {
     try {
-      const SceneDescription scene = load_scene_file(f, registry);
+      const SceneDescription scene = load_with_overrides(f, sets, registry).scene;
       std::printf("%s: ok (%.0f particles)\n", f.c_str(), scene.estimated_particles());
     } catch (const InputError& e) {
       ++bad;

@@ -16,11 +16,12 @@ struct RunArgs {
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;
-  std::string solver;            // empty: the scene's own solvers
-  std::string checkpoint_every;  // empty: checkpoints only on Ctrl-C
-  std::string resume;            // a run directory to continue; then scene is empty
-  bool render = false;           // pictures of every frame once the run is done
-  RenderArgs render_args;        // their look (the run directory is filled in)
+  std::string solver;             // empty: the scene's own solvers
+  std::string checkpoint_every;   // empty: checkpoints only on Ctrl-C
+  std::string resume;             // a run directory to continue; then scene is empty
+  std::vector<std::string> sets;  // --set POINTER=VALUE overrides (scene_overrides.h)
+  bool render = false;            // pictures of every frame once the run is done
+  RenderArgs render_args;         // their look (the run directory is filled in)
 };
 
 struct CompareArgs {
@@ -32,11 +33,13 @@ struct CompareArgs {
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;
-  std::string plot_script;  // empty: $UPF_PLOT_SCRIPT, else the source tree's script
+  std::string plot_script;        // empty: $UPF_PLOT_SCRIPT, else the source tree's script
+  std::vector<std::string> sets;  // --set POINTER=VALUE overrides
 };
 
 int run_command(const RunArgs& args);
 int compare_command(const CompareArgs& args);
-int validate_command(const std::vector<std::string>& files);
+int validate_command(const std::vector<std::string>& files,
+                     const std::vector<std::string>& sets = {});
 
 }  // namespace upf::app

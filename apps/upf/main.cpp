@@ -56,13 +56,20 @@ int main(int argc, char** argv) {
       "--checkpoint-every", run_args.checkpoint_every,
       "write a checkpoint every DURATION: 300s, 5m, 2h (wall-clock) or 0.5sim (simulated "
       "seconds; bitwise reproducible even with rigid-body contacts). Ctrl-C always writes one");
+  auto* set_option =
+      run->add_option(
+             "--set", run_args.sets,
+             "override a scene value by JSON pointer, checked like the file and kept in the run's "
+             "scene.json: --set /materials/water/viscosity=0.01 (repeatable)")
+          ->allow_extra_args(false);
   run->add_option("--resume", run_args.resume,
                   "continue the run in this output directory from its checkpoint, with the scene "
                   "and options it was started with (--end may move its end)")
       ->excludes(scene_option)
       ->excludes(out_option)
       ->excludes(solver_option)
-      ->excludes(every_option);
+      ->excludes(every_option)
+      ->excludes(set_option);
   run->add_flag("--render", run_args.render,
                 "draw a PNG of every frame (and an MP4 with ffmpeg) into OUT/render when done");
   add_render_options(*run, run_args.render_args);
@@ -95,6 +102,10 @@ int main(int argc, char** argv) {
   compare->add_option("--plot-script", compare_args.plot_script,
                       "the plotting script (default: $UPF_PLOT_SCRIPT, else "
                       "scripts/plot_compare.py of the source tree)");
+  compare
+      ->add_option("--set", compare_args.sets,
+                   "override a scene value by JSON pointer, as `upf run --set` (repeatable)")
+      ->allow_extra_args(false);
 
   upf::viewer::ViewOptions view_options;
   auto* view = app.add_subcommand(
@@ -114,6 +125,11 @@ int main(int argc, char** argv) {
   std::vector<std::string> validate_files;
   auto* validate = app.add_subcommand("validate", "check scene files; list every problem");
   validate->add_option("scenes", validate_files, "scene files")->required();
+  std::vector<std::string> validate_sets;
+  validate
+      ->add_option("--set", validate_sets,
+                   "override a value by JSON pointer before checking, as `upf run --set`")
+      ->allow_extra_args(false);
 
   bool info_markdown = false;
   auto* info = app.add_subcommand(
@@ -141,7 +157,7 @@ int main(int argc, char** argv) {
     }
     if (*render) return upf::app::render_command(render_args);
     if (*view) return upf::viewer::run_viewer(view_options, upf::app::make_app_registry());
-    if (*validate) return upf::app::validate_command(validate_files);
+    if (*validate) return upf::app::validate_command(validate_files, validate_sets);
     if (*info) return upf::app::info_command(info_markdown);
   } catch (const upf::InputError& e) {
     std::cerr << "error: invalid input\n" << e.what() << '\n';

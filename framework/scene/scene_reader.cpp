@@ -490,7 +490,7 @@ std::size_t find_number(const std::string& text, const std::string& number) {
 }
 }  // namespace
 
-SceneDescription load_scene_file(const std::filesystem::path& path, const Registry& registry) {
+nlohmann::json read_scene_json(const std::filesystem::path& path) {
   std::ifstream file(path);
   if (!file) {
     throw InputError(path.string(), std::filesystem::exists(path) ? "cannot be read (permissions?)"
@@ -516,7 +516,11 @@ SceneDescription load_scene_file(const std::filesystem::path& path, const Regist
                      "the number " + (number.empty() ? std::string("here") : number) +
                          " is out of range: a double holds magnitudes up to about 1.8e308");
   }
-  return read_scene(doc, registry, path.string());
+  return doc;
+}
+
+SceneDescription load_scene_file(const std::filesystem::path& path, const Registry& registry) {
+  return read_scene(read_scene_json(path), registry, path.string());
 }
 
 }  // namespace upf

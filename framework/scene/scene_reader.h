@@ -14,6 +14,10 @@ namespace upf {
 // InputError naming the file.
 SceneDescription load_scene_file(const std::filesystem::path& path, const Registry& registry);
 
+// The file's JSON, not yet checked as a scene: InputError for a missing file or a syntax error
+// (with line and column). For callers that change the document first (scene_overrides.h).
+nlohmann::json read_scene_json(const std::filesystem::path& path);
+
 // Validates an already parsed document; `source` names it in messages.
 SceneDescription read_scene(const nlohmann::json& document, const Registry& registry,
                             const std::string& source);

@@ -74,6 +74,42 @@ TEST_F(Cli, NumberBeyondADoubleIsNamedWithItsPlace) {
   EXPECT_NE(r.output.find("1e400 is out of range"), std::string::npos) << r.output;
 }
 
+TEST_F(Cli, SetOverridesAValueByJsonPointerAndTheRunRecordsIt) {
+  // SPlisHSPlasH-style overrides: the value is checked like the file's and kept in scene.json.
+  auto doc = sample();
+  const fs::path out = dir_ / "out";
+  const std::string scene = write(doc);
+  const Result r =
+      run_upf("run --set /time/end=0.05 --set /materials/water/viscosity=0.01 " + scene +
+              " --set /name=my_shot --out " + out.string() + " --threads 2 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream summary_file(out / "summary.json");
+  const auto summary = nlohmann::json::parse(summary_file);
+  EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.05, 1e-12);
+  std::ifstream recorded_file(out / "scene.json");
+  const auto recorded = nlohmann::json::parse(recorded_file);
+  EXPECT_EQ(recorded["materials"]["water"]["viscosity"], 0.01);
+  EXPECT_EQ(recorded["name"], "my_shot");  // not JSON: taken as a string
+  EXPECT_EQ(summary["scene"], "my_shot");
+  EXPECT_EQ(recorded["time"]["end"], 0.05);
+
+  // A value out of range is named by its JSON path; a missing parent or a bad pointer by --set.
+  Result bad = run_upf("validate " + scene + " --set /materials/water/density=-1");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.output.find("/materials/water/density"), std::string::npos) << bad.output;
+  bad = run_upf("validate " + scene + " --set /materials/oil/density=900");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.output.find("--set /materials/oil/density=900: the scene has no /materials/oil"),
+            std::string::npos)
+      << bad.output;
+  bad = run_upf("validate " + scene + " --set time/end=1");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.output.find("is not a JSON pointer"), std::string::npos) << bad.output;
+  bad = run_upf("validate " + scene + " --set /fluid_blocks/3={}");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.output.find("no index 3"), std::string::npos) << bad.output;
+}
+
 TEST_F(Cli, RunWritesOutputs) {
   auto doc = sample();
   doc["time"]["end"] = 0.1;
