@@ -16,7 +16,9 @@
 #include "framework/compare/report_table.h"
 #include "framework/core/errors.h"
 #include "framework/output/liquid_surface.h"
+#include "framework/run/output_fields.h"
 #include "framework/run/simulation_run.h"
+#include "framework/scene/scene_builder.h"
 #include "framework/scene/scene_overrides.h"
 #include "framework/scene/scene_reader.h"
 #include "framework/scene/solver_override.h"
@@ -204,6 +206,13 @@ int validate_command(const std::vector<std::string>& files, const std::vector<st
   for (const auto& f : files) {
     try {
       const SceneDescription scene = load_with_overrides(f, sets, registry).scene;
+      // Which fields exist is known once the solvers have declared theirs: with names given,
+      // build and prepare the world as `upf run` does before it writes, and check them.
+      if (scene.output.fields) {
+        const auto world = build_world(scene, registry, 0);
+        world->prepare();
+        check_output_fields(scene, world->particles());
+      }
       std::printf("%s: ok (%.0f particles)\n", f.c_str(), scene.estimated_particles());
     } catch (const InputError& e) {
       ++bad;

@@ -294,8 +294,10 @@ void read_containers(JsonInput& in, const json& doc, double h, SceneDescription&
   });
 }
 
-// /fluid_blocks: each must sit inside a container.
+// /fluid_blocks: each must sit inside a container, and no two may overlap: their lattices would
+// put particles closer than the spacing, which blow apart at the first steps.
 void read_fluid_blocks(JsonInput& in, const json& doc, double h, SceneDescription& scene) {
+  std::vector<std::pair<std::string, Box>> earlier;  // every block read so far, with its path
   in.for_each_object(doc, "", "fluid_blocks", [&](const json& b, const std::string& path) {
     in.check_keys(b, path, {"material", "min", "max", "velocity"});
     FluidBlockDesc desc;
@@ -308,6 +310,19 @@ void read_fluid_blocks(JsonInput& in, const json& doc, double h, SceneDescriptio
     auto box = read_box(in, b, path, h);
     if (!box) return;
     desc.box = *box;
+    for (const auto& [other_path, other] : earlier) {
+      const Eigen::Vector3d low = box->min.cwiseMax(other.min);
+      const Eigen::Vector3d high = box->max.cwiseMin(other.max);
+      if (((high - low).array() > 1e-9 * h).all()) {
+        std::ostringstream msg;
+        msg << "overlaps " << other_path << " in [" << low.transpose() << "] - ["
+            << high.transpose()
+            << "]: the two lattices would put particles closer than the spacing; blocks may "
+               "touch but not overlap";
+        in.problem(path, msg.str());
+      }
+    }
+    earlier.emplace_back(path, *box);
     bool inside = false;
     for (const auto& c : scene.containers) inside = inside || c.box.contains(*box, 1e-9);
     if (!inside) {

@@ -40,6 +40,21 @@ TEST_F(Cli, FluidBlockOutsideContainer) {
   expect_rejected(doc, {"/fluid_blocks/0", "not inside any container"});
 }
 
+TEST_F(Cli, OverlappingFluidBlocksAreRefusedWithBothPaths) {
+  // They passed validation and blew apart at step 2. Touching blocks stay allowed.
+  auto doc = sample();
+  auto second = doc["fluid_blocks"][0];
+  const double width = second["max"][0].get<double>() - second["min"][0].get<double>();
+  second["min"][0] = second["min"][0].get<double>() + 0.5 * width;
+  second["max"][0] = second["max"][0].get<double>() + 0.5 * width;
+  doc["fluid_blocks"].push_back(second);
+  expect_rejected(doc, {"/fluid_blocks/1: overlaps /fluid_blocks/0"});
+  doc["fluid_blocks"][1]["min"][0] = doc["fluid_blocks"][0]["max"][0];
+  doc["fluid_blocks"][1]["max"][0] = doc["fluid_blocks"][0]["max"][0].get<double>() + 0.1;
+  const Result touching = run_upf("validate " + write(doc));
+  EXPECT_EQ(touching.code, 0) << touching.output;
+}
+
 TEST_F(Cli, TooManyParticlesForMemory) {
   auto doc = sample();
   doc["particle_spacing"] = 1e-5;
@@ -162,6 +177,16 @@ TEST_F(Cli, OutputFieldNoSolverExportsStopsTheRunBeforeWriting) {
     EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
   EXPECT_TRUE(fs::is_directory(out));
   EXPECT_TRUE(fs::is_empty(out)) << "nothing but the directory is written";
+}
+
+TEST_F(Cli, ValidateChecksOutputFieldsAsRunDoes) {
+  // validate used to pass a misspelt field that run then refused.
+  auto doc = sample();
+  doc["output"]["fields"] = {"densty"};
+  expect_rejected(doc, {"/output/fields/0", "'densty'", "did you mean 'density'"});
+  doc["output"]["fields"] = {"density", "pressure"};
+  const Result ok = run_upf("validate " + write(doc));
+  EXPECT_EQ(ok.code, 0) << ok.output;
 }
 
 TEST_F(Cli, OutputFieldsMustBeNames) {
