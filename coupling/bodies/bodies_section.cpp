@@ -77,6 +77,7 @@ std::optional<BodySource> read_body(const json& node, const std::string& path, s
   }
   const std::string material_path = JsonInput::child(path, "material");
   if (!mat) {
+    if (scene.rejected(*material)) return std::nullopt;  // reported at its definition
     std::string msg = "unknown material '" + *material + "'";
     if (auto guess = did_you_mean(*material, names)) msg += " (did you mean '" + *guess + "'?)";
     in.problem(material_path, msg);
@@ -126,8 +127,8 @@ std::optional<BodySource> read_body(const json& node, const std::string& path, s
   const auto source = read_mesh_source(node["mesh"], mesh_path,
                                        std::filesystem::path(scene.source).parent_path(), in);
   if (!source) return std::nullopt;
-  const std::optional<double> density =
-      dynamic ? std::optional<double>(mat->param("density")) : std::nullopt;
+  std::optional<double> density;  // assigned, not a ?: of optionals (GCC 12 -Wmaybe-uninitialized)
+  if (dynamic) density = mat->param("density");
   if (!load_body_mesh(*source, mesh_path, double(scene.world.spacing), density, body, in))
     return std::nullopt;
   body.pivot = pivot.value_or(bounding_box(body.mesh).center());

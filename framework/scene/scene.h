@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -71,6 +72,14 @@ struct SceneDescription {
   std::vector<ProbeDesc> probes;
   OutputDesc output;
   std::vector<SceneSectionEntry> sections;  // plug-in keys ("bodies"), in registry order
+
+  // While reading: materials the file declares whose definition had problems (reported at
+  // their own paths), so that references to them add no second, false "no material" error.
+  std::vector<std::string> rejected_materials;
+  bool rejected(const std::string& material) const {
+    return std::find(rejected_materials.begin(), rejected_materials.end(), material) !=
+           rejected_materials.end();
+  }
 
   // In double: a huge box at a tiny spacing must give a huge number, not an overflow.
   double estimated_particles() const;

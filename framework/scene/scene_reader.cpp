@@ -53,10 +53,13 @@ std::optional<Box> read_box(JsonInput& in, const json& object, const std::string
   auto hi = in.vec3(object, path, "max", true);
   if (!lo || !hi) return std::nullopt;
   for (int a = 0; a < 3; ++a) {
-    if ((*hi)[a] - (*lo)[a] < min_extent) {
+    if ((*hi)[a] - (*lo)[a] < min_extent || (*hi)[a] < (*lo)[a]) {
       std::ostringstream msg;
-      msg << "box is " << (*hi)[a] - (*lo)[a] << " m along " << kAxisNames[std::size_t(a)]
-          << "; max must exceed min by at least one particle spacing (" << min_extent << " m)";
+      msg << "box is " << (*hi)[a] - (*lo)[a] << " m along " << kAxisNames[std::size_t(a)];
+      if (min_extent > 0)
+        msg << "; max must exceed min by at least one particle spacing (" << min_extent << " m)";
+      else
+        msg << "; max must exceed min";
       in.problem(JsonInput::child(path, "max"), msg.str());
       return std::nullopt;
     }
@@ -153,6 +156,7 @@ const Material* find_material(const SceneDescription& scene, const std::string& 
 bool check_material_ref(JsonInput& in, const SceneDescription& scene, const std::string& name,
                         const std::string& path, ParticleType expected) {
   const Material* m = find_material(scene, name);
+  if (!m && scene.rejected(name)) return false;  // its own problem is reported already
   if (!m) {
     std::vector<std::string> names;
     for (const auto& mat : scene.materials) names.push_back(mat.name);
@@ -262,9 +266,12 @@ void read_materials(JsonInput& in, const json& doc, const Registry& registry,
   if (auto it = doc.find("materials"); it == doc.end()) {
     in.problem("/materials", "missing (an object of named materials is required)");
   } else if (in.expect_object(*it, "/materials")) {
-    for (auto m = it->begin(); m != it->end(); ++m)
+    for (auto m = it->begin(); m != it->end(); ++m) {
+      const std::size_t before = scene.materials.size();
       read_material(in, m.value(), m.key(), JsonInput::child("/materials", m.key()), registry,
                     scene);
+      if (scene.materials.size() == before) scene.rejected_materials.push_back(m.key());
+    }
   }
   // Materials sharing a solver share one instance: their solver parameters must agree.
   for (std::size_t a = 0; a < scene.materials.size(); ++a)
@@ -457,7 +464,8 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   }
   const auto spacing = in.required_number(doc, "", "particle_spacing", 0, 100, true, "m");
   if (spacing) scene.world.spacing = Real(*spacing);
-  const double h = spacing.value_or(1.0);
+  // An unusable spacing is reported once: the extents of boxes are then not measured in it.
+  const double h = spacing.value_or(0.0);
 
   read_world_settings(in, doc, scene.world);
   read_materials(in, doc, registry, scene);

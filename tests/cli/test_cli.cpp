@@ -34,6 +34,33 @@ TEST_F(Cli, NonPositiveSpacingAndDensityAreRejectedTogether) {
   expect_rejected(doc, {"/particle_spacing", "/materials/water/density", "out of range"});
 }
 
+TEST_F(Cli, ARootCauseIsReportedOnce) {
+  // A bad spacing or a material with a bad solver or type used to bring false follow-on errors
+  // ("at least one particle spacing (1 m)", "no material named 'water'").
+  auto count_problems = [&](const nlohmann::json& doc, const std::string& needle) {
+    const Result r = run_upf("validate " + write(doc));
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(": 1 problem\n"), std::string::npos) << r.output;
+  };
+  auto doc = sample();
+  doc["particle_spacing"] = "fine";
+  count_problems(doc, "/particle_spacing: expected a number");
+  doc = sample();
+  doc["particle_spacing"] = -1;
+  count_problems(doc, "/particle_spacing: value -1 is out of range");
+  doc = sample();
+  doc["materials"]["water"]["solver"]["name"] = "pcsph";
+  count_problems(doc, "no solver named 'pcsph'");
+  doc = sample();
+  doc["materials"]["water"]["type"] = "liqid";
+  count_problems(doc, "unknown material type 'liqid'");
+  // A reference to a material the file does not declare is still an error.
+  doc = sample();
+  doc["fluid_blocks"][0]["material"] = "watr";
+  expect_rejected(doc, {"no material named 'watr' (did you mean 'water'?)"});
+}
+
 TEST_F(Cli, FluidBlockOutsideContainer) {
   auto doc = sample();
   doc["fluid_blocks"][0]["max"] = {2.0, 0.8, 0.4};
