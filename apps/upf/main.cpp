@@ -1,13 +1,13 @@
 // upf: the command-line program. Thin: it parses arguments and calls the framework.
 //   upf run SCENE [--out DIR] [--threads N] [--end T] [--quiet] [--solver NAME]
-//           [--checkpoint-every 5m|0.5sim]
+//           [--checkpoint-every 5m|0.5sim] [--set PTR=VALUE ...]
 //           [--render [--color-by F] [--size WxH] ...]
 //   upf run --resume DIR [--threads N] [--end T]
 //   upf render RUN_DIR [--color-by F] [--size WxH] [--frames A:B] [--out DIR] [--no-video]
 //   upf view SCENE_OR_RUN [--size WxH] [--threads N] [--play]
 //            [--screenshot FILE.png [--exit-after N]]
 //   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
-//   upf validate SCENE...
+//   upf validate SCENE... [--set PTR=VALUE]
 //   upf info [--markdown]
 // Exit codes: 0 ok, 1 other failure (output, compare's plots), 2 bad input, 3 unstable run,
 // 130 interrupted (Ctrl-C: a checkpoint was written, the run can be resumed).
@@ -18,6 +18,7 @@
 #include "app_registry.h"
 #include "commands.h"
 #include "framework/core/errors.h"
+#include "help_format.h"
 #include "info_command.h"
 #include "render_command.h"
 #include "viewer/viewer.h"
@@ -41,10 +42,24 @@ int main(int argc, char** argv) {
       "upf: unified particle framework (liquids, rigid bodies, granular media, frozen "
       "boundaries in one particle world)"};
   app.require_subcommand(1);
+  // Set before the commands are added: each takes a copy of the app's formatter.
+  app.formatter(std::make_shared<upf::app::PlainHelpFormatter>());
+  app.footer(upf::app::main_help_footer());
   app.set_version_flag("--version", "upf 0.1.0");
 
   upf::app::RunArgs run_args;
   auto* run = app.add_subcommand("run", "run a scene: frames, metrics and probes into --out");
+  run->footer(R"(
+Examples:
+  upf run samples/dam_break.json --out out/db --threads 2
+  upf run samples/dam_break.json --solver dfsph --end 0.5 --no-frames
+  upf run samples/dam_break.json --set /materials/water/viscosity=0.01 --set /time/end=2
+  upf run samples/dam_break.json --checkpoint-every 5m      then: upf run --resume out/dam_break
+  upf run samples/dam_break.json --render --color-by pressure
+
+A new run into a directory that holds an earlier run replaces that run's files.
+Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame written),
+130 interrupted by Ctrl-C (checkpoint written; --resume continues).)");
   auto* scene_option = run->add_option("scene", run_args.scene, "scene file (JSON)");
   auto* out_option =
       run->add_option("--out,-o", run_args.out_dir, "output directory (default out/<scene name>)");
@@ -77,6 +92,12 @@ int main(int argc, char** argv) {
   upf::app::RenderArgs render_args;
   auto* render = app.add_subcommand(
       "render", "draw a run's saved frames: one PNG per frame, and an MP4 with ffmpeg");
+  render->footer(R"(
+Examples:
+  upf render out/dam_break                       pictures into out/dam_break/render/
+  upf render out/dam_break --color-by pressure --frames 0:30 --size 1920x1080
+
+Exit codes: 0 ok, 1 output failure, 2 bad input (no run there, unknown field).)");
   render->add_option("run_dir", render_args.run_dir, "the run's output directory")->required();
   render->add_option("--out,-o", render_args.out_dir, "picture directory (default RUN_DIR/render)");
   render->add_option("--frames", render_args.frames,
@@ -89,6 +110,12 @@ int main(int argc, char** argv) {
   upf::app::CompareArgs compare_args;
   auto* compare = app.add_subcommand(
       "compare", "run a scene once per solver into OUT/<solver>/, then report and plot");
+  compare->footer(R"(
+Examples:
+  upf compare samples/dam_break.json --solvers pcisph,dfsph,iisph --end 0.5 --threads 2
+  upf compare samples/hydrostatic_tank.json --set /time/end=0.5 --no-frames
+
+Exit codes: 0 ok (an unstable solver gets its row), 1 plots missing, 2 bad input.)");
   compare->add_option("scene", compare_args.scene, "scene file (JSON)")->required();
   auto* solvers =
       compare
@@ -96,7 +123,7 @@ int main(int argc, char** argv) {
                        "comma-separated solver names (default: every registered solver the "
                        "scene has particles for)")
           ->delimiter(',');
-  compare->add_option("--out,-o", compare_args.out_dir, "output directory")->capture_default_str();
+  compare->add_option("--out,-o", compare_args.out_dir, "output directory (default out/compare)");
   add_run_controls(*compare, compare_args.threads, compare_args.end_time, compare_args.quiet,
                    compare_args.no_frames);
   compare->add_option("--plot-script", compare_args.plot_script,
@@ -110,6 +137,12 @@ int main(int argc, char** argv) {
   upf::viewer::ViewOptions view_options;
   auto* view = app.add_subcommand(
       "view", "an interactive window over a scene (stepped live) or a run's saved frames");
+  view->footer(R"(
+Examples:
+  upf view samples/dam_break.json                stepped live
+  upf view out/dam_break --play                  a run's saved frames
+
+Exit codes: 0 ok, 1 no display or OpenGL, 2 bad input.)");
   view->add_option("input", view_options.input, "a scene file or a run's output directory")
       ->required();
   view->add_option("--size", view_options.size, "window size WIDTHxHEIGHT (default 1280x720)");
@@ -124,6 +157,11 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> validate_files;
   auto* validate = app.add_subcommand("validate", "check scene files; list every problem");
+  validate->footer(R"(
+Example:
+  upf validate samples/*.json
+
+Exit codes: 0 every scene valid, 2 a problem in some scene (each as file:/json/path: message).)");
   validate->add_option("scenes", validate_files, "scene files")->required();
   std::vector<std::string> validate_sets;
   validate
@@ -134,6 +172,10 @@ int main(int argc, char** argv) {
   bool info_markdown = false;
   auto* info = app.add_subcommand(
       "info", "list materials, solvers and world settings with their parameters");
+  info->footer(R"(
+Examples:
+  upf info                 materials, solvers and world settings with units, defaults, ranges
+  upf info --markdown      the same tables as the docs embed them)");
   info->add_flag("--markdown", info_markdown,
                  "print the parameter tables as the Markdown blocks of docs/ "
                  "(scripts/update-reference-docs copies them in)");

@@ -152,6 +152,24 @@ TEST_F(Cli, SetOverridesAValueByJsonPointerAndTheRunRecordsIt) {
   EXPECT_NE(bad.output.find("no index 3"), std::string::npos) << bad.output;
 }
 
+TEST_F(Cli, HelpShowsExamplesAndExitCodesWithoutParserClutter) {
+  const Result main_help = run_upf("--help");
+  EXPECT_EQ(main_help.code, 0) << main_help.output;
+  for (const char* s : {"Examples:", "upf run samples/dam_break.json", "Exit codes: 0 ok",
+                        "2 bad input", "3 unstable"})
+    EXPECT_NE(main_help.output.find(s), std::string::npos) << s << "\n" << main_help.output;
+  const Result run_help = run_upf("run --help");
+  EXPECT_EQ(run_help.code, 0) << run_help.output;
+  for (const char* s : {"--threads N", "--end T", "--set PTR=VALUE", "Examples:", "Exit codes"})
+    EXPECT_NE(run_help.output.find(s), std::string::npos) << s << "\n" << run_help.output;
+  for (const char* clutter : {"Excludes:", "INT:INT", "FLOAT:POSITIVE", "TEXT"})
+    EXPECT_EQ(run_help.output.find(clutter), std::string::npos) << clutter << "\n"
+                                                                << run_help.output;
+  // The checks the annotations described still hold.
+  const Result bad = run_upf("run " + write(sample()) + " --threads 0");
+  EXPECT_NE(bad.code, 0);
+}
+
 TEST_F(Cli, RunWritesOutputs) {
   auto doc = sample();
   doc["time"]["end"] = 0.1;
