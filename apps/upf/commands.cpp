@@ -10,6 +10,7 @@
 
 #include "app_registry.h"
 #include "checkpoint_options.h"
+#include "device/device_pipelines.h"
 #include "framework/checkpoint/checkpoint_file.h"
 #include "framework/compare/compare_report.h"
 #include "framework/compare/comparison.h"
@@ -95,6 +96,11 @@ int run_command(const RunArgs& args) {
   options.scene_text = run.scene_text;
   options.surface_mesher = run_surface_mesher;
   options.resume = !args.resume.empty();
+  // Not kept in the checkpoint: every device gives the same bits, so a run may resume on another.
+  if (args.device != "cpu")
+    options.make_device = [&](const World& world) {
+      return make_device_pipeline(args.device, world);
+    };
   InterruptSignal interrupt;
   options.stop_requested = [&] { return interrupt.requested(); };
   ProgressReporter progress(stderr);

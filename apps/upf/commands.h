@@ -20,6 +20,7 @@ struct RunArgs {
   std::string checkpoint_every;   // empty: checkpoints only on Ctrl-C
   std::string resume;             // a run directory to continue; then scene is empty
   std::vector<std::string> sets;  // --set POINTER=VALUE overrides (scene_overrides.h)
+  std::string device = "cpu";     // where the steps run (device/device_pipelines.h)
   bool render = false;            // pictures of every frame once the run is done
   RenderArgs render_args;         // their look (the run directory is filled in)
 };

@@ -56,6 +56,7 @@ Examples:
   upf run samples/dam_break.json --set /materials/water/viscosity=0.01 --set /time/end=2
   upf run samples/dam_break.json --checkpoint-every 5m      then: upf run --resume out/dam_break
   upf run samples/dam_break.json --render --color-by pressure
+  upf run samples/dam_break.json --device cuda       on a GPU (omp: the same pipeline on the CPU)
 
 A new run into a directory that holds an earlier run replaces that run's files.
 Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame written),
@@ -85,6 +86,9 @@ Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame wri
       ->excludes(solver_option)
       ->excludes(every_option)
       ->excludes(set_option);
+  run->add_option("--device", run_args.device,
+                  "where the steps run: cpu (default), omp (the GPU pipeline on the CPU's "
+                  "threads, bitwise the same results) or cuda; PCISPH with frozen walls so far");
   run->add_flag("--render", run_args.render,
                 "draw a PNG of every frame (and an MP4 with ffmpeg) into OUT/render when done");
   add_render_options(*run, run_args.render_args);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "framework/executors/cpu/cpu_executor.h"
+#include "framework/particles/kinetic_energy.h"
 
 namespace upf {
 
@@ -49,7 +50,7 @@ class FixedPointAccumulator {
 // Sum of value(i) in blocks of 4096 added in index order: bitwise the same for any thread count.
 template <class Value>
 double block_sum(const CpuExecutor& exec, std::size_t n, Value&& value) {
-  constexpr std::size_t kBlock = 4096;
+  constexpr std::size_t kBlock = kBlockSumSize;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<double> partial(blocks, 0.0);
   exec.for_each_index(blocks, [&](std::size_t b) {

@@ -69,7 +69,12 @@ UPF_HD inline Real norm(const Vec3& a) {
   return std::sqrt(squared_norm(a));
 }
 UPF_HD inline bool is_finite(const Vec3& a) {
+#if defined(__CUDA_ARCH__)
+  // libstdc++'s std::isfinite is a constexpr host function; CUDA's own isfinite runs on devices.
+  return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
+#else
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+#endif
 }
 
 }  // namespace upf

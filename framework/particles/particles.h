@@ -101,9 +101,9 @@ class Particles {
   void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
 
- private:
   // visit(a.position, b.position, ...), then velocity, ... for every built-in array, in the order
-  // of checkpoints. One list, so a new built-in array cannot be forgotten by one operation.
+  // of checkpoints. One list, so a new built-in array cannot be forgotten by one operation; any
+  // structure with members of these names takes part (the device mirror, device_particles.h).
   template <class Visit, class... P>
   static void for_each_builtin(Visit&& visit, P&... p) {
     visit(p.position...);
@@ -115,6 +115,8 @@ class Particles {
     visit(p.body...);
     visit(p.boundary_volume...);
   }
+
+ private:
   void check_owner(const Particles* owner, bool valid) const;
   template <class T>
   std::vector<T>& field_in(std::map<std::string, Field<T>>& fields, const std::string& name, T init,

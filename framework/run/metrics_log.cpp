@@ -6,18 +6,9 @@
 #include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
 #include "framework/output/resumed_log.h"
+#include "framework/particles/kinetic_energy.h"
 
 namespace upf {
-
-namespace {
-struct KineticEnergyValue {
-  const Real* mass;
-  const Vec3* velocity;
-  double operator()(std::size_t i) const {
-    return 0.5 * double(mass[i]) * double(squared_norm(velocity[i]));
-  }
-};
-}  // namespace
 
 double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
   return block_sum(exec, particles.size(),

@@ -63,18 +63,19 @@ class RunRecorder {
 
   // The world's last step, and its frame when the frame clock (or the end) says so.
   void step(bool at_end) {
-    const Particles& particles = world_.particles();
+    // Through the world, not its particles: with a device pipeline these are reductions on the
+    // device, and the particles come down only for frames.
     StepMetrics m;
     m.step = world_.step_count();
     m.time = world_.time();
-    m.kinetic_energy = kinetic_energy(particles, world_.executor());
+    m.kinetic_energy = world_.kinetic_energy();
     for (int t = 0; t < kParticleTypeCount; ++t)
-      m.count_by_type[t] = particles.count(static_cast<ParticleType>(t));
+      m.count_by_type[t] = world_.count(static_cast<ParticleType>(t));
     metrics_.add(m, world_.last_step());
     totals_.add_step(world_.last_step(), result_);
     const double t = world_.time();
     if (t >= next_frame_time() - 1e-12 || at_end) {
-      frame(particles, t);
+      frame(world_.particles(), t);
       while (next_frame_time() <= t + 1e-12) ++next_frame_;
     }
   }
@@ -159,6 +160,7 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
                          const RunOptions& options) {
   auto world = build_world(scene, registry, options.threads);
   world->prepare();
+  if (options.make_device) world->set_device(options.make_device(*world));
   return run_world(*world, scene, options);
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "framework/run/frame_writer.h"
 #include "framework/scene/scene.h"
 #include "framework/solver/registry.h"
+#include "framework/world/device_pipeline.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -58,6 +60,10 @@ struct RunOptions {
   std::function<bool()> stop_requested;
   // Needed when the scene asks for the "surface" format; unset: such a scene is bad input.
   SurfaceMesher surface_mesher;
+  // Where the steps run: unset, the CPU executor; else the device pipeline it makes for the
+  // prepared world (device/device_pipelines.h), before anything is written. It may throw
+  // InputError (a scene the pipeline does not cover, no GPU).
+  std::function<std::unique_ptr<DevicePipeline>(const World&)> make_device;
 };
 
 struct RunResult {

@@ -8,8 +8,10 @@
 #include <stdexcept>
 
 #include "framework/boundary/akinci_volume.h"
+#include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
+#include "framework/particles/kinetic_energy.h"
 
 namespace upf {
 
@@ -135,6 +137,10 @@ void World::update_neighbours() {
 
 void World::step(double dt) {
   if (!prepared_) throw std::logic_error("World::prepare() must run before World::step()");
+  if (device_) {
+    step_on_device(dt);
+    return;
+  }
   Stopwatch total;
   particles_.snapshot_into(last_good_);
 
@@ -176,6 +182,55 @@ void World::step(double dt) {
   check_stability();
 }
 
+void World::set_device(std::unique_ptr<DevicePipeline> pipeline) {
+  if (!prepared_) throw std::logic_error("World::prepare() must run before World::set_device()");
+  sync_host();
+  device_ = std::move(pipeline);
+  device_stale_ = device_ != nullptr;
+  host_stale_ = false;
+}
+
+void World::sync_host() const {
+  if (!device_ || !host_stale_) return;
+  device_->download(particles_);
+  host_stale_ = false;
+}
+
+double World::kinetic_energy() const {
+  if (device_ && !device_stale_) return device_->kinetic_energy();
+  return block_sum(executor_, particles_.size(),
+                   KineticEnergyValue{particles_.mass.data(), particles_.velocity.data()});
+}
+
+std::size_t World::count(ParticleType type) const {
+  if (device_ && !device_stale_) return device_->count(type);
+  return particles_.count(type);
+}
+
+void World::step_on_device(double dt) {
+  Stopwatch total;
+  if (device_stale_) {
+    device_->upload(particles_);
+    device_stale_ = false;
+  }
+  report_ = StepReport{};
+  report_.dt = dt;
+  host_stale_ = true;
+  device_->step(step_count_, dt, report_);
+  time_ += dt;
+  ++step_count_;
+  report_.total_ms = total.elapsed_ms();
+  check_stability_on_device();
+}
+
+void World::check_stability_on_device() {
+  const std::size_t bad = device_->first_broken_particle(settings_.max_speed);
+  if (bad == particles_.size()) return;
+  sync_host();
+  device_->download_last_good(last_good_);
+  check_stability();
+}
+
 std::vector<std::string> World::stage_names() const {
   std::vector<std::string> names;
   for (const StageRunner& r : stage_runners_)
@@ -185,6 +240,15 @@ std::vector<std::string> World::stage_names() const {
 }
 
 namespace {
+// |v_i|^2 of a liquid particle, 0 for the others.
+struct LiquidSpeedSquared {
+  const Vec3* v;
+  const ParticleType* type;
+  Real operator()(std::uint32_t i) const {
+    return type[i] == ParticleType::Liquid ? squared_norm(v[i]) : Real(0);
+  }
+};
+
 // A particle whose state went bad: a position or velocity that is not finite, or a runaway speed.
 struct BrokenParticle {
   const Vec3* x;
@@ -195,6 +259,12 @@ struct BrokenParticle {
   }
 };
 }  // namespace
+
+Real World::max_liquid_speed_squared() const {
+  if (device_ && !device_stale_) return device_->max_liquid_speed_squared();
+  return executor_.max_of(all_particles(particles_.size()),
+                          LiquidSpeedSquared{particles_.velocity.data(), particles_.type.data()});
+}
 
 void World::check_stability() const {
   // The first bad particle in id order, so the report is the same for any thread count.
@@ -217,6 +287,7 @@ void World::check_stability() const {
 }
 
 void World::save_state(StateWriter& out) const {
+  sync_host();
   out.section("world");
   out.put(time_);
   out.put(step_count_);
@@ -254,6 +325,8 @@ void World::restore_state(StateReader& in) {
     b->restore_state(in);
   }
   particles_.snapshot_into(last_good_);
+  device_stale_ = device_ != nullptr;
+  host_stale_ = false;
 }
 
 }  // namespace upf

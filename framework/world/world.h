@@ -25,27 +25,27 @@
 #include "framework/world/body_system.h"
 #include "framework/world/container_box.h"
 #include "framework/world/coupling.h"
+#include "framework/world/device_pipeline.h"
+#include "framework/world/step_report.h"
 #include "framework/world/world_settings.h"
 
 namespace upf {
-
-// What one step did, for metrics.
-struct StepReport {
-  double dt = 0;
-  double neighbour_ms = 0;
-  double total_ms = 0;
-  SolverStats solver;  // merged over solvers: max iterations, max errors
-  // Wall milliseconds by stage, in World::stage_names() order: every solver's declared stages,
-  // then "bodies" when there are body systems.
-  std::vector<std::pair<std::string, double>> stage_ms;
-};
 
 class World {
  public:
   World(WorldSettings settings, int threads);
 
-  Particles& particles() { return particles_; }
-  const Particles& particles() const { return particles_; }
+  // With a device pipeline the device holds the current particles between steps: both accessors
+  // download them first, and the mutable one uploads them again before the next step.
+  Particles& particles() {
+    sync_host();
+    device_stale_ = device_ != nullptr;
+    return particles_;
+  }
+  const Particles& particles() const {
+    sync_host();
+    return particles_;
+  }
   MaterialTable& materials() { return materials_; }
   const MaterialTable& materials() const { return materials_; }
   const WorldSettings& settings() const { return settings_; }
@@ -70,6 +70,17 @@ class World {
   int request_neighbours(TypeMask query, TypeMask target, Real radius = 0);
   const NeighbourList& neighbours(int handle) const { return lists_.at(std::size_t(handle)).list; }
   const NeighbourGrid& grid() const { return grid_; }
+
+  // Steps on `pipeline` from now on (device/device_pipelines.h makes them), or on the CPU again
+  // when null. Call after prepare(). Neighbour lists of the world (neighbours()) are then not
+  // kept: the pipeline's solvers use its own.
+  void set_device(std::unique_ptr<DevicePipeline> pipeline);
+  const DevicePipeline* device() const { return device_.get(); }
+  // max |v|^2 over liquid particles, wherever they are (the solvers' CFL limits).
+  Real max_liquid_speed_squared() const;
+  // The metrics' kinetic energy (kinetic_energy.h) and particle counts, wherever the particles are.
+  double kinetic_energy() const;
+  std::size_t count(ParticleType type) const;
 
   // Orders the solvers by their coupling declarations (an InputError naming the solvers when a
   // read has no writer or the declarations form a cycle), boundary volumes of frozen and rigid
@@ -111,10 +122,15 @@ class World {
   void order_solvers();
   void update_neighbours();
   void check_stability() const;
+  void step_on_device(double dt);
+  void check_stability_on_device();
+  // Downloads the device's particles when they are newer than the host's.
+  void sync_host() const;
 
   WorldSettings settings_;
   CpuExecutor executor_;
-  Particles particles_;
+  // Mutable: the const accessors download the device's copy into it (sync_host).
+  mutable Particles particles_;
   Particles last_good_;
   MaterialTable materials_;
   NeighbourGrid grid_;
@@ -129,6 +145,9 @@ class World {
   std::uint64_t step_count_ = 0;
   bool prepared_ = false;
   StepReport report_;
+  std::unique_ptr<DevicePipeline> device_;
+  mutable bool host_stale_ = false;  // the device's particles are newer
+  bool device_stale_ = false;        // the host's particles are newer (or never uploaded)
 };
 
 }  // namespace upf

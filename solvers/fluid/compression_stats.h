@@ -31,6 +31,7 @@ class StoppingError {
  public:
   explicit StoppingError(double percentile = 0) : percentile_(percentile) {}
   bool is_average() const { return percentile_ <= 0; }
+  double percentile() const { return percentile_; }
   double operator()(const CpuExecutor& exec, const OwnedParticles& owned, const FluidView& f,
                     const Real* density);
 

@@ -8,22 +8,6 @@
 
 namespace upf {
 
-namespace {
-// |v_i|^2 of a liquid particle, 0 for the others.
-struct LiquidSpeedSquared {
-  const Vec3* v;
-  const ParticleType* type;
-  Real operator()(std::uint32_t i) const {
-    return type[i] == ParticleType::Liquid ? squared_norm(v[i]) : Real(0);
-  }
-};
-}  // namespace
-
-Real max_liquid_speed_squared(const Particles& particles, const CpuExecutor& exec) {
-  return exec.max_of(all_particles(particles.size()),
-                     LiquidSpeedSquared{particles.velocity.data(), particles.type.data()});
-}
-
 Real free_fall_speed(const World& world) {
   const Vec3 g = world.settings().gravity;
   const Real g_norm = norm(g);
@@ -49,7 +33,7 @@ Real viscous_time_step(const WorldSettings& s, Real max_viscosity) {
 }
 
 Real max_liquid_speed(const World& world) {
-  return std::sqrt(max_liquid_speed_squared(world.particles(), world.executor()));
+  return std::sqrt(world.max_liquid_speed_squared());
 }
 }  // namespace
 

@@ -15,9 +15,6 @@ namespace upf {
 
 class World;
 
-// Largest squared speed of liquid particles: exact, so the same for any thread count.
-Real max_liquid_speed_squared(const Particles& particles, const CpuExecutor& exec);
-
 Real fluid_cfl_time_step(const World& world, Real max_viscosity, Real reference_speed);
 
 // For solvers whose pressure waves travel at a speed of sound c (SPH's sqrt(k), WCSPH's c):

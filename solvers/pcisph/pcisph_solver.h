@@ -38,6 +38,19 @@ class PcisphSolver final : public Solver {
   void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
 
+  // What a device pipeline needs to run this solver's step on its own arrays (device/).
+  struct DeviceSetup {
+    PcisphParams params;
+    double delta_scale;  // delta = delta_scale / dt^2
+    const FluidSolverState* fluid;
+  };
+  DeviceSetup device_setup() const {
+    return {
+        {eta_, min_iterations_, max_iterations_, stopping_.percentile()}, delta_scale_, &fluid_};
+  }
+  static constexpr const char* kPredictedPosition = "pcisph.predicted_position";
+  static constexpr const char* kPredictedDensity = "pcisph.predicted_density";
+
   static ParamBinding<PcisphParams> param_binding();
   // sum over the template neighbourhood of |grad W|^2 (the symmetric lattice makes sum grad W = 0
   // up to round-off, kept anyway as in the paper). delta = delta_scale / dt^2.

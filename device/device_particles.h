@@ -1,0 +1,102 @@
+// The device mirror of Particles: the same structure of arrays, named fields included, in a
+// backend's memory (device_backend_*.h). Uploaded once; frames, probes and checkpoints download.
+// Reordering gathers every array, as Particles::permute does.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <thrust/copy.h>
+#include <thrust/gather.h>
+
+#include "device/device_primitives.h"
+#include "framework/particles/particles.h"
+
+namespace upf::device {
+
+template <class Backend>
+class DeviceParticles {
+  template <class T>
+  using vector = typename Backend::template vector<T>;
+
+ public:
+  vector<Vec3> position, velocity;
+  vector<Real> mass, boundary_volume;
+  vector<ParticleType> type;
+  vector<MaterialId> material;
+  vector<ParticleId> id;
+  vector<BodyId> body;
+
+  std::size_t size() const { return position.size(); }
+
+  // Every array and every named field of `p`.
+  void upload(const Particles& p) {
+    Particles::for_each_builtin([](auto& to, const auto& from) { assign(to, from); }, *this, p);
+    for (const auto& [name, f] : p.scalar_fields()) assign(scalars_[name], f.values);
+    for (const auto& [name, f] : p.vector_fields()) assign(vectors_[name], f.values);
+    exported_.clear();
+    for (const auto& [name, f] : p.scalar_fields()) exported_[name] = f.exported;
+    for (const auto& [name, f] : p.vector_fields()) exported_[name] = f.exported;
+  }
+
+  // Every array and named field into `p`, which has the same fields (the one uploaded from).
+  void download(Particles& p) const { download(p, false); }
+  // Only the built-in arrays and the exported fields: what Particles::snapshot_into copies.
+  void download_snapshot(Particles& p) const { download(p, true); }
+
+  // The same arrays and exported fields in `into`: the last good state of a step.
+  void snapshot_into(DeviceParticles& into) const {
+    Particles::for_each_builtin([](auto& to, const auto& from) { to = from; }, into, *this);
+    for (const auto& [name, f] : scalars_)
+      if (exported_.at(name)) into.scalars_[name] = f;
+    for (const auto& [name, f] : vectors_)
+      if (exported_.at(name)) into.vectors_[name] = f;
+    into.exported_ = exported_;
+  }
+
+  // A named field's array; the object stays put (reordering swaps its contents).
+  vector<Real>& scalar_array(const std::string& name) { return scalars_.at(name); }
+  vector<Vec3>& vector_array(const std::string& name) { return vectors_.at(name); }
+
+  // new[i] = old[order[i]] for every array.
+  void permute(const vector<std::uint32_t>& order) {
+    auto gather = [&](auto& a) {
+      std::decay_t<decltype(a)> scratch(a.size());
+      thrust::gather(Backend::policy(), order.begin(), order.end(), a.begin(), scratch.begin());
+      a.swap(scratch);
+    };
+    Particles::for_each_builtin([&](auto& a) { gather(a); }, *this);
+    for (auto& [name, f] : scalars_) gather(f);
+    for (auto& [name, f] : vectors_) gather(f);
+  }
+
+ private:
+  template <class T>
+  static void assign(vector<T>& to, const std::vector<T>& from) {
+    to.resize(from.size());
+    thrust::copy(from.begin(), from.end(), to.begin());
+  }
+  template <class T>
+  static void fetch(std::vector<T>& to, const vector<T>& from) {
+    to.resize(from.size());
+    thrust::copy(from.begin(), from.end(), to.begin());
+  }
+
+  void download(Particles& p, bool snapshot_only) const {
+    Particles::for_each_builtin([](auto& to, const auto& from) { fetch(to, from); }, p, *this);
+    for (const auto& [name, f] : scalars_)
+      if (!snapshot_only || exported_.at(name)) fetch(p.scalar_field(name), f);
+    for (const auto& [name, f] : vectors_)
+      if (!snapshot_only || exported_.at(name)) fetch(p.vector_field(name), f);
+  }
+
+  std::map<std::string, vector<Real>> scalars_;
+  std::map<std::string, vector<Vec3>> vectors_;
+  std::map<std::string, bool> exported_;
+};
+
+}  // namespace upf::device
