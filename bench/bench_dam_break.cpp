@@ -50,19 +50,10 @@ int main(int argc, char** argv) {
     liquid = world->particles().count(upf::ParticleType::Liquid);
     total = world->particles().size();
     for (int s = 0; s < 20; ++s) world->step(world->next_time_step());
-    double wall_ms = 0, iters = 0;
-    std::map<std::string, double> stages;
-    for (int s = 0; s < steps; ++s) {
-      world->step(world->next_time_step());
-      const auto& rep = world->last_step();
-      wall_ms += rep.total_ms;
-      iters += rep.solver.iterations;
-      stages["neighbours"] += rep.neighbour_ms;
-      for (const auto& [name, ms] : rep.stage_ms) stages[name] += ms;
-    }
-    rates.push_back(double(liquid) * steps / (wall_ms / 1000.0));
-    iterations.push_back(iters / steps);
-    for (const auto& [name, ms] : stages) stage_ms[name].push_back(ms / steps);
+    const upf::bench::StepTimes times = upf::bench::time_steps(*world, steps);
+    rates.push_back(double(liquid) * steps / (times.wall_ms / 1000.0));
+    iterations.push_back(times.iterations / steps);
+    for (const auto& [name, ms] : times.stage_ms) stage_ms[name].push_back(ms / steps);
     std::printf("run %d: %.3g fluid particle-steps/s\n", r + 1, rates.back());
   }
   rusage usage{};

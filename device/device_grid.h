@@ -5,10 +5,10 @@
 //              the lowest particle) and its double-precision cell coordinates;
 //   order      particles sorted by id, then stable-sorted by key: (key, id) order, as on the CPU;
 //   cells      the first slot of each distinct key (a copy_if over key changes);
-//   lists      per particle a count pass over the 27 cells (z, y, x from -1 to 1, a binary search
-//              of the cell keys each), an exclusive scan into CSR offsets, and a fill pass that
-//              visits the candidates in the same order. A particle's list is therefore the CPU's:
-//              the 27 cells in the same order, each cell's particles in id order.
+//   lists      per cell its 27 neighbour cells (z, y, x from -1 to 1, a binary search of the cell
+//              keys each); per particle a count pass over them, a scan into CSR offsets, and a fill
+//              pass that visits the candidates in the same order. A particle's list is therefore
+//              the CPU's: the 27 cells in the same order, each cell's particles in id order.
 #pragma once
 
 #include <cmath>
@@ -36,6 +36,7 @@ struct DeviceNeighbourList {
   typename Backend::template vector<std::uint32_t> indices;
   NeighbourView view() const { return {raw<std::uint32_t>(offsets), raw<std::uint32_t>(indices)}; }
   std::size_t total() const { return indices.size(); }
+  std::size_t bytes() const { return bytes_of(offsets) + bytes_of(indices); }
 };
 
 namespace grid_detail {
@@ -110,6 +111,7 @@ struct GridView {
   const std::uint32_t* cell_of_slot;
   const Vec3* sorted_x;
   const ParticleType* sorted_type;
+  const std::uint32_t* cell_neighbours;  // 27 per cell (CellNeighboursStage)
 
   // The cell with key k, or `cells` when there is none.
   UPF_HD std::size_t find(std::uint64_t k) const {
@@ -124,25 +126,45 @@ struct GridView {
     return lo < cells && cell_key[lo] == k ? lo : cells;
   }
 
-  // visit(slot) for every candidate slot around particle slot s, in NeighbourGrid's order.
-  template <class Visit>
-  UPF_HD void for_each_candidate(std::uint32_t s, Visit& visit) const {
-    const std::uint64_t key = cell_key[cell_of_slot[s]];
-    const std::int64_t c[3] = {std::int64_t(compact_bits_3d(key)),
-                               std::int64_t(compact_bits_3d(key >> 1)),
-                               std::int64_t(compact_bits_3d(key >> 2))};
+  // The neighbour cells of cell c, in NeighbourGrid's order, into out[27] (`cells` if missing).
+  UPF_HD void find_neighbour_cells(std::size_t c, std::uint32_t* out) const {
+    const std::uint64_t key = cell_key[c];
+    const std::int64_t cx = std::int64_t(compact_bits_3d(key)),
+                       cy = std::int64_t(compact_bits_3d(key >> 1)),
+                       cz = std::int64_t(compact_bits_3d(key >> 2));
+    int k = 0;
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const std::int64_t nx = c[0] + dx, ny = c[1] + dy, nz = c[2] + dz;
+        for (int dx = -1; dx <= 1; ++dx, ++k) {
+          const std::int64_t nx = cx + dx, ny = cy + dy, nz = cz + dz;
+          out[k] = std::uint32_t(cells);
           if (nx < 0 || ny < 0 || nz < 0 || nx > kMortonAxisMax || ny > kMortonAxisMax ||
               nz > kMortonAxisMax)
             continue;
-          const std::size_t j =
-              find(morton_key(std::uint32_t(nx), std::uint32_t(ny), std::uint32_t(nz)));
-          if (j == cells) continue;
-          for (std::uint32_t u = cell_begin[j]; u < cell_begin[j + 1]; ++u) visit(u);
+          out[k] = std::uint32_t(
+              find(morton_key(std::uint32_t(nx), std::uint32_t(ny), std::uint32_t(nz))));
         }
+  }
+
+  // visit(slot) for every candidate slot around particle slot s, in NeighbourGrid's order.
+  template <class Visit>
+  UPF_HD void for_each_candidate(std::uint32_t s, Visit& visit) const {
+    const std::uint32_t* around = cell_neighbours + std::size_t(cell_of_slot[s]) * 27;
+    for (int k = 0; k < 27; ++k) {
+      const std::uint32_t j = around[k];
+      if (j == cells) continue;
+      for (std::uint32_t u = cell_begin[j]; u < cell_begin[j + 1]; ++u) visit(u);
+    }
+  }
+};
+
+// Per cell c: its 27 neighbour cells in NeighbourGrid's order (z, y, x from -1 to 1), the missing
+// ones as `cells`: one binary search per cell and direction, shared by all its particles.
+struct CellNeighboursStage {
+  GridView g;
+  std::uint32_t* cell_neighbours;
+  UPF_HD void operator()(std::size_t c) const {
+    g.find_neighbour_cells(c, cell_neighbours + c * 27);
   }
 };
 
@@ -258,11 +280,20 @@ class DeviceGrid {
     for_each_index<Backend>(
         n, SortedCopyStage{raw<std::uint32_t>(order_), x, type, raw<Vec3>(sorted_x_),
                            raw<ParticleType>(sorted_type_)});
+    cell_neighbours_.resize(cells_ * 27);
+    for_each_index<Backend>(cells_,
+                            CellNeighboursStage{view(), raw<std::uint32_t>(cell_neighbours_)});
   }
 
   // Particle indices in (cell key, id) order: the locality order for reordering.
   const vector<std::uint32_t>& sorted_order() const { return order_; }
   std::size_t cell_count() const { return cells_; }
+  std::size_t bytes() const {
+    return bytes_of(keys_) + bytes_of(sorted_keys_) + bytes_of(cell_key_) + bytes_of(order_) +
+           bytes_of(scratch_ids_) + bytes_of(cell_begin_) + bytes_of(cell_of_slot_) +
+           bytes_of(slot_of_) + bytes_of(sorted_x_) + bytes_of(sorted_type_) +
+           bytes_of(cell_neighbours_);
+  }
 
   // For every particle whose type is in `query`, the others within `radius` whose type is in
   // targets[l], into outs[l] (one or two lists), as NeighbourGrid::find_neighbours.
@@ -299,14 +330,16 @@ class DeviceGrid {
             raw<std::uint32_t>(slot_of_),
             raw<std::uint32_t>(cell_of_slot_),
             raw<Vec3>(sorted_x_),
-            raw<ParticleType>(sorted_type_)};
+            raw<ParticleType>(sorted_type_),
+            raw<std::uint32_t>(cell_neighbours_)};
   }
 
   Real cell_size_;
   std::size_t n_ = 0, cells_ = 0;
   Vec3 origin_{};
   vector<std::uint64_t> keys_, sorted_keys_, cell_key_;
-  vector<std::uint32_t> order_, scratch_ids_, cell_begin_, cell_of_slot_, slot_of_;
+  vector<std::uint32_t> order_, scratch_ids_, cell_begin_, cell_of_slot_, slot_of_,
+      cell_neighbours_;
   vector<Vec3> sorted_x_;
   vector<ParticleType> sorted_type_;
 };

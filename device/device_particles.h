@@ -62,6 +62,16 @@ class DeviceParticles {
   vector<Real>& scalar_array(const std::string& name) { return scalars_.at(name); }
   vector<Vec3>& vector_array(const std::string& name) { return vectors_.at(name); }
 
+  // Device memory held by every array and field.
+  std::size_t bytes() const {
+    std::size_t total = 0;
+    auto add = [&](const auto& a) { total += bytes_of(a); };
+    Particles::for_each_builtin(add, *this);
+    for (const auto& [name, f] : scalars_) add(f);
+    for (const auto& [name, f] : vectors_) add(f);
+    return total;
+  }
+
   // new[i] = old[order[i]] for every array.
   void permute(const vector<std::uint32_t>& order) {
     auto gather = [&](auto& a) {

@@ -6,10 +6,11 @@
 //         without a GPU, and what every CI run tests
 //   cuda  the device pipeline on an NVIDIA GPU (sm_80, sm_90)
 //
-// The pipeline covers PCISPH liquids with frozen walls so far; another scene, a backend this
-// build lacks, or no usable GPU is an InputError that says which.
+// The pipeline covers PCISPH and WCSPH liquids with frozen walls so far; another scene, a backend
+// this build lacks, or no usable GPU is an InputError that says which.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -20,6 +21,15 @@
 namespace upf {
 
 class World;
+
+// Device memory the pipeline needs for a world of `particles`, `liquid` of them liquid: checked
+// against the GPU's free memory before a CUDA run starts.
+std::size_t estimated_device_bytes(std::size_t particles, std::size_t liquid);
+
+// Copy bandwidth of `device`'s memory (bytes read plus written per second, in GB/s) over a buffer
+// of `bytes`: cudaMemcpy device to device for "cuda", memcpy in host memory otherwise. The
+// ceiling that the benchmark's traffic figures are fractions of.
+double copy_bandwidth_gbps(std::string_view device, std::size_t bytes);
 
 // The names --device accepts, in this build.
 std::vector<std::string> device_names();

@@ -26,6 +26,12 @@ const T* raw(const Vector& v) {
   return thrust::raw_pointer_cast(v.data());
 }
 
+// Device memory a buffer holds.
+template <class Vector>
+std::size_t bytes_of(const Vector& v) {
+  return v.capacity() * sizeof(typename Vector::value_type);
+}
+
 // stage(range[k]) for the k-th listed particle.
 template <class Stage>
 struct RangeLoop {
@@ -128,5 +134,23 @@ std::size_t first_by_id(std::size_t n, const std::uint32_t* id, const Predicate&
                                IdKeyWhere<Predicate>{holds, id}, ~std::uint64_t(0), MinOf{});
   return best == ~std::uint64_t(0) ? n : std::size_t(best & 0xffffffffu);
 }
+
+// The primitives above as an executor object with CpuExecutor's interface, so orchestration
+// written once for both (pcisph_correction_loop.h) runs on a backend unchanged.
+template <class Backend>
+struct DeviceExecutor {
+  template <class Stage>
+  void run(ParticleRange range, const Stage& stage) const {
+    device::run<Backend>(range, stage);
+  }
+  template <class Value>
+  Real max_of(ParticleRange range, const Value& value, Real floor = 0) const {
+    return device::max_of<Backend>(range, value, floor);
+  }
+  template <class Value>
+  double fixed_point_sum(ParticleRange range, const Value& value, int fraction_bits = 32) const {
+    return device::fixed_point_sum<Backend>(range, value, fraction_bits);
+  }
+};
 
 }  // namespace upf::device

@@ -41,6 +41,8 @@ class DevicePipeline {
   virtual double kinetic_energy() const = 0;
   // Particles of `type` (types do not change while the device steps).
   virtual std::size_t count(ParticleType type) const = 0;
+  // Device memory its buffers hold now, in bytes.
+  virtual std::size_t device_bytes() const = 0;
   // The index of the first particle (by id) with a non-finite position or velocity or a speed
   // above max_speed, or the particle count when all are fine (World::check_stability).
   virtual std::size_t first_broken_particle(double max_speed) const = 0;

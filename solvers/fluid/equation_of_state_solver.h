@@ -24,6 +24,8 @@ class EquationOfStateSolver : public Solver {
   std::vector<std::string> stages() const final;
   void step(World& world, Real dt, StageRunner& run) final;
   SolverStats stats() const final { return stats_; }
+  // The shared fluid state, for the device pipeline (device/).
+  const FluidSolverState& fluid_state() const { return fluid_; }
 
  protected:
   // Called by prepare() once the shared state is set up.

@@ -32,16 +32,13 @@ FluidView FluidSolverState::begin_step(const World& world) {
 }
 
 void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density) {
-  const CpuExecutor& exec = world.executor();
-  exec.run(owned.range(),
-           DensityAndGradientsStage{f, fluid_gradient.data(), boundary_gradient.data(), density});
-  exec.run(owned.range(),
-           GravityAndViscosityStage{f, density, fluid_gradient.data(), world.settings().gravity,
-                                    other_acceleration.data()});
-  if (world.coupling().active(CouplingArray::LiquidForce))
-    exec.run(owned.range(),
-             AddForceOverMassStage{world.coupling()[CouplingArray::LiquidForce].data(), f.mass,
-                                   other_acceleration.data()});
+  const Vec3* liquid_force = world.coupling().active(CouplingArray::LiquidForce)
+                                 ? world.coupling()[CouplingArray::LiquidForce].data()
+                                 : nullptr;
+  run_non_pressure_stages(world.executor(), owned.range(), f,
+                          {fluid_gradient.data(), boundary_gradient.data(),
+                           other_acceleration.data(), density, liquid_force},
+                          world.settings().gravity);
 }
 
 void FluidSolverState::predict_unowned(const World& world, const FluidView& f, Vec3* x_star,

@@ -108,4 +108,25 @@ struct PressureOverDensitySquared {
   }
 };
 
+// The non-pressure part every fluid solver's step starts with, for any executor (the CPU's, or
+// the device pipeline's): density and kernel gradients at the current positions, then
+// a_other = g + viscosity, plus F / m from other materials when `liquid_force` is not null.
+struct NonPressureArrays {
+  Vec3* fluid_gradient;
+  Vec3* boundary_gradient;
+  Vec3* other_acceleration;
+  Real* density;
+  const Vec3* liquid_force;  // CouplingArray::LiquidForce, or null
+};
+
+template <class Executor>
+void run_non_pressure_stages(const Executor& exec, ParticleRange owned, const FluidView& f,
+                             const NonPressureArrays& a, const Vec3& gravity) {
+  exec.run(owned, DensityAndGradientsStage{f, a.fluid_gradient, a.boundary_gradient, a.density});
+  exec.run(owned,
+           GravityAndViscosityStage{f, a.density, a.fluid_gradient, gravity, a.other_acceleration});
+  if (a.liquid_force)
+    exec.run(owned, AddForceOverMassStage{a.liquid_force, f.mass, a.other_acceleration});
+}
+
 }  // namespace upf

@@ -8,6 +8,7 @@
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_time_step.h"
 #include "solvers/fluid/lattice_template.h"
+#include "solvers/pcisph/pcisph_correction_loop.h"
 #include "solvers/pcisph/pcisph_kernels.h"
 
 namespace upf {
@@ -91,29 +92,19 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
   run("pressure", [&] {
     Real* rho_star = p[predicted_density_].data();
     Vec3* x_star = p[predicted_position_].data();
-    Vec3* a_p = fluid_.pressure_acceleration.data();
     fluid_.predict_unowned(world, f, x_star, dt);
-    const Real delta = Real(delta_scale_ / (double(dt) * double(dt)));
-    const PcisphPredictStage predict{f, fluid_.other_acceleration.data(), a_p, dt, x_star};
-    const PcisphCorrectPressureStage correct{f, x_star, delta, rho_star, pressure};
-    const PcisphPressureAccelerationStage accelerate{f, pressure, fluid_.fluid_gradient.data(),
-                                                     fluid_.boundary_gradient.data(), a_p};
-    double error = 0;
-    int iteration = 0;
-    while (iteration < max_iterations_) {
-      exec.run(fluid_.owned.range(), predict);
-      exec.run(fluid_.owned.range(), correct);
-      // An exact stopping error (a fixed-point sum for the average): the same iteration count
-      // for any thread count.
-      error = stopping_(exec, fluid_.owned, f, rho_star);
-      exec.run(fluid_.owned.range(), accelerate);
-      ++iteration;
-      if (iteration >= min_iterations_ && error <= eta_) break;
-    }
-    stats_.iterations = iteration;
-    stats_.avg_density_error =
-        stopping_.is_average() ? error : average_compression(exec, fluid_.owned, f, rho_star);
-    stats_.max_density_error = max_compression(exec, fluid_.owned, f, rho_star);
+    const PcisphLoopArrays arrays{f,
+                                  fluid_.owned.range(),
+                                  fluid_.other_acceleration.data(),
+                                  fluid_.fluid_gradient.data(),
+                                  fluid_.boundary_gradient.data(),
+                                  fluid_.pressure_acceleration.data(),
+                                  x_star,
+                                  rho_star,
+                                  pressure};
+    stats_ = pcisph_correction_loop(
+        exec, arrays, loop_settings(), dt,
+        [&](const CompressionValue&) { return stopping_(exec, fluid_.owned, f, rho_star); });
   });
 
   // Reactions on rigid bodies, then symplectic Euler with the final pressure forces.

@@ -18,6 +18,7 @@
 #include "framework/solver/solver.h"
 #include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_solver_state.h"
+#include "solvers/pcisph/pcisph_correction_loop.h"
 
 namespace upf {
 
@@ -38,16 +39,13 @@ class PcisphSolver final : public Solver {
   void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
 
-  // What a device pipeline needs to run this solver's step on its own arrays (device/).
-  struct DeviceSetup {
-    PcisphParams params;
-    double delta_scale;  // delta = delta_scale / dt^2
-    const FluidSolverState* fluid;
-  };
-  DeviceSetup device_setup() const {
-    return {
-        {eta_, min_iterations_, max_iterations_, stopping_.percentile()}, delta_scale_, &fluid_};
+  // What a device pipeline needs to run this solver's step on its own arrays (device/): the
+  // correction loop's settings (pcisph_correction_loop.h) and the shared fluid state.
+  PcisphLoopSettings loop_settings() const {
+    return {eta_, min_iterations_, max_iterations_, stopping_.is_average(), delta_scale_};
   }
+  double stop_percentile() const { return stopping_.percentile(); }
+  const FluidSolverState& fluid_state() const { return fluid_; }
   static constexpr const char* kPredictedPosition = "pcisph.predicted_position";
   static constexpr const char* kPredictedDensity = "pcisph.predicted_density";
 

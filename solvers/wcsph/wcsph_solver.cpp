@@ -3,7 +3,7 @@
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_time_step.h"
 #include "solvers/fluid/sound_speed.h"
-#include "solvers/wcsph/wcsph_kernels.h"
+#include "solvers/wcsph/wcsph_steps.h"
 
 namespace upf {
 
@@ -42,23 +42,24 @@ Real WcsphSolver::max_time_step(const World& world) const {
   return sound_speed_time_step(world, cfl_, sound_speed_, fluid().max_viscosity);
 }
 
+Real WcsphSolver::artificial_viscosity_factor(Real support_radius) const {
+  if (alpha_ <= 0) return 0;
+  const Real h = Real(0.5) * support_radius;  // the smoothing length
+  return Real(2) * alpha_ * h * sound_speed_;
+}
+
 void WcsphSolver::add_own_non_pressure(const World& world, const FluidView& f, Real* density) {
-  if (alpha_ <= 0) return;
-  const Real h = Real(0.5) * world.settings().support_radius();  // the smoothing length
-  const Real two_alpha_h_c = Real(2) * alpha_ * h * sound_speed_;
-  world.executor().run(fluid().owned.range(),
-                       ArtificialViscosityStage{f, density, fluid().fluid_gradient.data(),
-                                                two_alpha_h_c, fluid().other_acceleration.data()});
+  run_wcsph_viscosity(world.executor(), fluid().owned.range(), f, density,
+                      fluid().fluid_gradient.data(),
+                      artificial_viscosity_factor(world.settings().support_radius()),
+                      fluid().other_acceleration.data());
 }
 
 void WcsphSolver::compute_pressure(const World& world, const FluidView& f, const Real* density,
                                    Real* pressure) {
-  const CpuExecutor& exec = world.executor();
-  exec.run(fluid().owned.range(), TaitPressureStage{f, density, tait_factor_.data(), pressure});
-  exec.run(fluid().owned.range(),
-           WcsphPressureAccelerationStage{f, density, pressure, fluid().fluid_gradient.data(),
-                                          fluid().boundary_gradient.data(),
-                                          fluid().pressure_acceleration.data()});
+  run_wcsph_pressure(world.executor(), fluid().owned.range(), f, density, tait_factor_.data(),
+                     pressure, fluid().fluid_gradient.data(), fluid().boundary_gradient.data(),
+                     fluid().pressure_acceleration.data());
 }
 
 }  // namespace upf

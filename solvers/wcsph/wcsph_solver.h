@@ -50,6 +50,10 @@ class WcsphSolver final : public EquationOfStateSolver {
   static ParamBinding<WcsphParams> param_binding();
   // The speed of sound in use: `sound_speed`, or 10 sqrt(2 g H) when it is 0. Set by prepare().
   Real sound_speed() const { return sound_speed_; }
+  // 2 alpha h c of the artificial viscosity (h = support / 2), 0 without it; per material
+  // B = rho0 c^2 / 7 of the Tait equation. For the device pipeline too (device/).
+  Real artificial_viscosity_factor(Real support_radius) const;
+  const std::vector<Real>& tait_factors() const { return tait_factor_; }
 
  private:
   void prepare_method(World& world) override;

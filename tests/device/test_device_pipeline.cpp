@@ -1,5 +1,5 @@
 // The device pipeline on Thrust's OpenMP system ("--device omp") against the CPU executor: the
-// same scene stepped both ways gives bitwise identical particles (positions, velocities, density,
+// same scene stepped both ways (PCISPH, WCSPH) gives bitwise identical particles (positions, velocities, density,
 // pressure, every field), step statistics and checkpoints, for 1 and 2 threads (DESIGN.md,
 // "Determinism": the device pipeline's CPU instantiation is bitwise the CPU path). Reference: the
 // CPU path, whose physics tests/physics checks against analytic and experimental references.
@@ -105,6 +105,14 @@ TEST(DevicePipelineOmp, HydrostaticTankIsBitwiseTheCpuPath) {
   expect_parity(small_tank(), 80);
 }
 
+TEST(DevicePipelineOmp, WcsphDamBreakIsBitwiseTheCpuPath) {
+  auto doc = small_dam_break();
+  doc["materials"]["water"]["solver"] = {{"name", "wcsph"}};
+  expect_parity(doc, 150);
+  doc["materials"]["water"]["solver"] = {{"name", "wcsph"}, {"alpha", 0}};
+  expect_parity(doc, 60);
+}
+
 TEST(DevicePipelineOmp, PercentileStoppingTestIsBitwiseTheCpuPath) {
   auto doc = small_dam_break();
   doc["materials"]["water"]["solver"]["stop_percentile"] = 99;
@@ -162,7 +170,7 @@ TEST(DevicePipeline, ScenesItDoesNotCoverAreRefusedWithTheReason) {
   }
   {
     auto doc = small_dam_break();
-    doc["materials"]["water"]["solver"] = {{"name", "wcsph"}};
+    doc["materials"]["water"]["solver"] = {{"name", "sph"}};
     testing::TestWorld tw(doc, 1);
     EXPECT_THROW(make_device_pipeline("omp", *tw.world), InputError);
   }

@@ -1,9 +1,11 @@
-// PCISPH (Solenthaler & Pajarola 2009) on the device pipeline, for any backend: the world's step
-// (World::step) and PcisphSolver::step with the solver's own stage structs, on device arrays.
+// A fluid solver's step on the device pipeline, for any backend and any pressure method
+// (pcisph_method.h, wcsph_method.h): the world's step (World::step) and the fluid solvers' shared
+// step (FluidSolverState) with the solvers' own stage structs and orchestration, on device arrays.
 //
 // A step: the last good state (a device copy), reordering on the world's cadence, the device
-// grid's lists (liquid -> liquid, liquid -> boundary), then the solver's three stages
-// "non_pressure", "pressure" and "integration", timed like the CPU's. Every per-particle stage and
+// grid's lists (liquid -> liquid, liquid -> boundary), then the three stages "non_pressure"
+// (shared forces, then the method's own), "pressure" (the method's) and "integration", timed like
+// the CPU's. Every per-particle stage and
 // every reduction gives the CPU executor's bits (device_primitives.h, device_grid.h), so frames of
 // this pipeline equal the CPU's bit for bit (tests/device). Scenes it does not cover yet are
 // refused by make_device_pipeline, never run half-way. Its inputs are plain values
@@ -24,13 +26,12 @@
 #include "device/device_grid.h"
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
-#include "device/pcisph_setup.h"
+#include "device/fluid_setup.h"
 #include "framework/core/stopwatch.h"
 #include "framework/particles/kinetic_energy.h"
 #include "framework/solver/stage_runner.h"
 #include "framework/world/device_pipeline.h"
 #include "solvers/fluid/fluid_stages.h"
-#include "solvers/pcisph/pcisph_kernels.h"
 
 namespace upf::device {
 
@@ -60,14 +61,6 @@ struct BrokenParticle {
   }
 };
 
-// The compression of the k-th owned particle into out[k] (StoppingError's percentiles).
-struct ListedCompressionStage {
-  ParticleRange listed;
-  CompressionValue value;
-  Real* out;
-  UPF_HD void operator()(std::size_t k) const { out[k] = value(listed[k]); }
-};
-
 // Block b of block_sum (deterministic_sum.h): its values added in index order.
 template <class Value>
 struct BlockSumStage {
@@ -84,14 +77,30 @@ struct BlockSumStage {
 
 }  // namespace pipeline_detail
 
-template <class Backend>
-class PcisphPipeline final : public DevicePipeline {
+// What a pressure method sees of a step: the view, the owned particles and the shared buffers.
+struct FluidStep {
+  FluidView f;
+  ParticleRange owned;
+  OwnedMaterials owns;
+  std::size_t n;  // all particles
+  Real dt;
+  Real* density;
+  Real* pressure;
+  Vec3* fluid_gradient;
+  Vec3* boundary_gradient;
+  Vec3* other_acceleration;
+  Vec3* pressure_acceleration;
+};
+
+template <class Backend, class Method>
+class FluidPipeline final : public DevicePipeline {
   template <class T>
   using vector = typename Backend::template vector<T>;
 
  public:
-  explicit PcisphPipeline(PcisphSetup setup)
+  FluidPipeline(FluidSetup setup, typename Method::Setup method)
       : setup_(std::move(setup)),
+        method_(std::move(method)),
         grid_(setup_.support_radius),
         stages_(setup_.stages),
         threads_(setup_.threads) {
@@ -109,8 +118,7 @@ class PcisphPipeline final : public DevicePipeline {
     for (int t = 0; t < kParticleTypeCount; ++t) counts_[t] = particles.count(ParticleType(t));
     density_ = &particles_.scalar_array(setup_.density);
     pressure_ = &particles_.scalar_array(setup_.pressure);
-    predicted_density_ = &particles_.scalar_array(setup_.predicted_density);
-    predicted_position_ = &particles_.vector_array(setup_.predicted_position);
+    method_.bind(particles_);
   }
 
   void download(Particles& p) const override { particles_.download(p); }
@@ -139,6 +147,14 @@ class PcisphPipeline final : public DevicePipeline {
   }
 
   std::size_t count(ParticleType t) const override { return counts_[int(t)]; }
+
+  std::size_t device_bytes() const override {
+    return particles_.bytes() + last_good_.bytes() + grid_.bytes() + fluid_list_.bytes() +
+           boundary_list_.bytes() + bytes_of(owned_) + bytes_of(fluid_gradient_) +
+           bytes_of(boundary_gradient_) + bytes_of(other_acceleration_) +
+           bytes_of(pressure_acceleration_) + method_.bytes() + bytes_of(rest_density_) +
+           bytes_of(viscosity_) + bytes_of(boundary_viscosity_) + bytes_of(owns_);
+  }
 
   std::size_t first_broken_particle(double max_speed) const override {
     const typename Backend::ThreadScope threads(threads_);
@@ -217,81 +233,46 @@ class PcisphPipeline final : public DevicePipeline {
     return {raw<std::uint32_t>(owned_), std::size_t(last - owned_.begin())};
   }
 
-  // StoppingError on the device: the same value for every percentile choice.
-  double stopping_error(ParticleRange owned, const CompressionValue& value) {
-    const double percentile = setup_.stop_percentile;
-    if (owned.size == 0) return 0.0;
-    if (percentile <= 0) return fixed_point_sum<Backend>(owned, value) / double(owned.size);
-    if (percentile >= 100) return double(max_of<Backend>(owned, value));
-    compressions_.resize(owned.size);
-    for_each_index<Backend>(owned.size, pipeline_detail::ListedCompressionStage{
-                                            owned, value, raw<Real>(compressions_)});
-    thrust::sort(Backend::policy(), compressions_.begin(), compressions_.end());
-    const auto rank =
-        std::size_t(std::max(1.0, std::ceil(percentile / 100.0 * double(owned.size)))) - 1;
-    return double(compressions_[rank]);
-  }
-
-  // PcisphSolver::step and FluidSolverState's shared stages.
+  // FluidSolverState's shared stages around the method's.
   void solver_step(Real dt) {
     const std::size_t n = particles_.size();
-    Real* density = raw<Real>(*density_);
-    Real* pressure = raw<Real>(*pressure_);
-    Vec3* x_star = raw<Vec3>(*predicted_position_);
-    Real* rho_star = raw<Real>(*predicted_density_);
-    FluidView f;
-    ParticleRange owned;
-    stats_ = SolverStats{};
+    const DeviceExecutor<Backend> exec;
+    FluidStep step{};
+    step.n = n;
+    step.dt = dt;
+    step.density = raw<Real>(*density_);
+    step.pressure = raw<Real>(*pressure_);
+    step.owns = owned_materials();
 
     stages_("non_pressure", [&] {
-      owned = rebuild_owned();
+      step.owned = rebuild_owned();
       fluid_gradient_.resize(fluid_list_.total());
       boundary_gradient_.resize(n);
       other_acceleration_.resize(n);
       pressure_acceleration_.resize(n);
-      f = fluid_view();
-      run<Backend>(owned, DensityAndGradientsStage{f, raw<Vec3>(fluid_gradient_),
-                                                   raw<Vec3>(boundary_gradient_), density});
-      run<Backend>(owned, GravityAndViscosityStage{f, density, raw<Vec3>(fluid_gradient_),
-                                                   setup_.gravity, raw<Vec3>(other_acceleration_)});
-      run<Backend>(owned, ClearPressureStage{pressure, raw<Vec3>(pressure_acceleration_)});
+      step.f = fluid_view();
+      step.fluid_gradient = raw<Vec3>(fluid_gradient_);
+      step.boundary_gradient = raw<Vec3>(boundary_gradient_);
+      step.other_acceleration = raw<Vec3>(other_acceleration_);
+      step.pressure_acceleration = raw<Vec3>(pressure_acceleration_);
+      run_non_pressure_stages(exec, step.owned, step.f,
+                              {step.fluid_gradient, step.boundary_gradient, step.other_acceleration,
+                               step.density, nullptr},
+                              setup_.gravity);
+      method_.non_pressure(exec, step);
     });
 
-    stages_("pressure", [&] {
-      Vec3* a_p = raw<Vec3>(pressure_acceleration_);
-      run<Backend>(all_particles(n), PredictUnownedStage{f, owned_materials(), dt, x_star});
-      const Real delta = Real(setup_.delta_scale / (double(dt) * double(dt)));
-      const PcisphPredictStage predict{f, raw<Vec3>(other_acceleration_), a_p, dt, x_star};
-      const PcisphCorrectPressureStage correct{f, x_star, delta, rho_star, pressure};
-      const PcisphPressureAccelerationStage accelerate{f, pressure, raw<Vec3>(fluid_gradient_),
-                                                       raw<Vec3>(boundary_gradient_), a_p};
-      const CompressionValue compression{f.rest_density, f.material, rho_star};
-      double error = 0;
-      int iteration = 0;
-      while (iteration < setup_.max_iterations) {
-        run<Backend>(owned, predict);
-        run<Backend>(owned, correct);
-        error = stopping_error(owned, compression);
-        run<Backend>(owned, accelerate);
-        ++iteration;
-        if (iteration >= setup_.min_iterations && error <= setup_.eta) break;
-      }
-      stats_.iterations = iteration;
-      stats_.avg_density_error =
-          setup_.stop_percentile <= 0 || owned.size == 0
-              ? error
-              : fixed_point_sum<Backend>(owned, compression) / double(owned.size);
-      stats_.max_density_error = owned.size ? double(max_of<Backend>(owned, compression)) : 0.0;
-    });
+    stages_("pressure", [&] { stats_ = method_.pressure(exec, step); });
 
     stages_("integration", [&] {
-      run<Backend>(owned, SymplecticEulerStage{
-                              raw<Vec3>(other_acceleration_), raw<Vec3>(pressure_acceleration_), dt,
-                              raw<Vec3>(particles_.velocity), raw<Vec3>(particles_.position)});
+      run<Backend>(step.owned, SymplecticEulerStage{
+                                   step.other_acceleration, step.pressure_acceleration, dt,
+                                   raw<Vec3>(particles_.velocity), raw<Vec3>(particles_.position)});
     });
   }
 
-  PcisphSetup setup_;
+  FluidSetup setup_;
+  Method method_;
   DeviceParticles<Backend> particles_, last_good_;
   DeviceGrid<Backend> grid_;
   DeviceNeighbourList<Backend> fluid_list_, boundary_list_;
@@ -303,11 +284,8 @@ class PcisphPipeline final : public DevicePipeline {
   vector<std::uint8_t> owns_;
   vector<std::uint32_t> owned_;
   vector<Vec3> fluid_gradient_, boundary_gradient_, other_acceleration_, pressure_acceleration_;
-  vector<Real> compressions_;
   vector<Real>* density_ = nullptr;
   vector<Real>* pressure_ = nullptr;
-  vector<Real>* predicted_density_ = nullptr;
-  vector<Vec3>* predicted_position_ = nullptr;
 };
 
 }  // namespace upf::device

@@ -1,0 +1,41 @@
+// What the device pipeline needs of the world and of a fluid solver, as plain values: made on the
+// host (device_pipelines.cpp) from World and the solver, so the pipeline's source, which nvcc
+// builds too, needs none of their headers.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "framework/core/vec3.h"
+#include "solvers/pcisph/pcisph_correction_loop.h"
+
+namespace upf::device {
+
+// The world's settings and FluidSolverState's constants.
+struct FluidSetup {
+  // Per material: FluidMaterialTable's constants and whether the solver moves it.
+  std::vector<Real> rest_density, viscosity, boundary_viscosity;
+  std::vector<std::uint8_t> owns;
+  Vec3 gravity{};
+  Real support_radius = 0;
+  int reorder_every = 0;
+  int threads = 0;
+  std::vector<std::string> stages;  // the solver's stage names, for the metrics
+  std::string density = "density", pressure = "pressure";  // the exported fields
+};
+
+// PcisphSolver's correction loop and stopping test.
+struct PcisphSetup {
+  PcisphLoopSettings loop{};
+  double stop_percentile = 0;
+  std::string predicted_density, predicted_position;  // its fields
+};
+
+// WcsphSolver's constants (Becker & Teschner 2007).
+struct WcsphSetup {
+  std::vector<Real> tait_factor;  // per material: B = rho0 c^2 / 7
+  Real artificial_viscosity = 0;  // 2 alpha h c; 0: none
+};
+
+}  // namespace upf::device
