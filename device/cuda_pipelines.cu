@@ -8,6 +8,7 @@
 #include "device/device_backend_cuda.cuh"
 #include "device/fluid_pipeline.h"
 #include "device/pcisph_method.h"
+#include "device/sph_method.h"
 #include "device/wcsph_method.h"
 
 namespace upf::device {
@@ -53,6 +54,11 @@ void cuda_memory(std::size_t& free, std::size_t& total) {
 std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, PcisphSetup pcisph) {
   return std::make_unique<FluidPipeline<CudaBackend, PcisphMethod<CudaBackend>>>(std::move(fluid),
                                                                                  std::move(pcisph));
+}
+
+std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, SphSetup sph) {
+  return std::make_unique<FluidPipeline<CudaBackend, SphMethod<CudaBackend>>>(std::move(fluid),
+                                                                              std::move(sph));
 }
 
 std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, WcsphSetup wcsph) {

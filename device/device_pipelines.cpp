@@ -9,6 +9,7 @@
 #include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
 #include "solvers/pcisph/pcisph_solver.h"
+#include "solvers/sph/sph_solver.h"
 #include "solvers/wcsph/wcsph_solver.h"
 
 namespace upf {
@@ -16,14 +17,15 @@ namespace upf {
 namespace {
 
 constexpr const char* kCovered =
-    "the device pipeline runs PCISPH or WCSPH liquids with frozen walls so far (no bodies, grains "
-    "or other solvers); run this scene with --device cpu";
+    "the device pipeline runs PCISPH, WCSPH or SPH liquids with frozen walls so far (no bodies, "
+    "grains or other solvers); run this scene with --device cpu";
 
 // The world's fluid solver when the pipeline covers the scene, else an InputError saying why.
 [[maybe_unused]] const Solver& covered_solver(const World& world, const std::string& where) {
   const auto& solvers = world.solvers();
   if (solvers.size() != 1 ||
-      (solvers.front()->name() != "pcisph" && solvers.front()->name() != "wcsph")) {
+      (solvers.front()->name() != "pcisph" && solvers.front()->name() != "wcsph" &&
+       solvers.front()->name() != "sph")) {
     std::string names;
     for (const auto& s : solvers) names += (names.empty() ? "" : ", ") + std::string(s->name());
     throw InputError(where, "the scene's solvers are " + names + ": " + kCovered);
@@ -65,6 +67,13 @@ std::unique_ptr<DevicePipeline> make_for(const World& world, const Solver& solve
     method.predicted_density = PcisphSolver::kPredictedDensity;
     method.predicted_position = PcisphSolver::kPredictedPosition;
     return make(fluid_setup(world, solver, pcisph->fluid_state()), std::move(method));
+  }
+  if (const auto* sph = dynamic_cast<const SphSolver*>(&solver)) {
+    device::SphSetup method;
+    method.kernels = sph->kernel_choice(world.settings().support_radius());
+    method.stiffness = sph->stiffness();
+    method.mu = sph->paper_viscosity();
+    return make(fluid_setup(world, solver, sph->fluid_state()), std::move(method));
   }
   const auto& wcsph = dynamic_cast<const WcsphSolver&>(solver);
   device::WcsphSetup method;

@@ -9,6 +9,7 @@
 
 #include "framework/core/vec3.h"
 #include "solvers/pcisph/pcisph_correction_loop.h"
+#include "solvers/sph/sph_steps.h"
 
 namespace upf::device {
 
@@ -36,6 +37,13 @@ struct PcisphSetup {
 struct WcsphSetup {
   std::vector<Real> tait_factor;  // per material: B = rho0 c^2 / 7
   Real artificial_viscosity = 0;  // 2 alpha h c; 0: none
+};
+
+// SphSolver's constants (Müller et al. 2003).
+struct SphSetup {
+  SphKernelChoice kernels{};
+  Real stiffness = 0;  // k of p = k (rho - rho0)
+  Real mu = 0;         // the paper's dynamic viscosity; 0: none
 };
 
 }  // namespace upf::device

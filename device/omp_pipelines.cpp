@@ -3,6 +3,7 @@
 #include "device/device_backend_omp.h"
 #include "device/fluid_pipeline.h"
 #include "device/pcisph_method.h"
+#include "device/sph_method.h"
 #include "device/wcsph_method.h"
 
 namespace upf::device {
@@ -10,6 +11,11 @@ namespace upf::device {
 std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, PcisphSetup pcisph) {
   return std::make_unique<FluidPipeline<OmpBackend, PcisphMethod<OmpBackend>>>(std::move(fluid),
                                                                                std::move(pcisph));
+}
+
+std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, SphSetup sph) {
+  return std::make_unique<FluidPipeline<OmpBackend, SphMethod<OmpBackend>>>(std::move(fluid),
+                                                                            std::move(sph));
 }
 
 std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, WcsphSetup wcsph) {

@@ -9,6 +9,7 @@
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
 #include "device/fluid_setup.h"
+#include "device/state_equation_stats.h"
 #include "solvers/fluid/fluid_stages.h"
 #include "solvers/wcsph/wcsph_steps.h"
 
@@ -38,13 +39,7 @@ class WcsphMethod {
   SolverStats pressure(const Executor& exec, const Step& s) const {
     run_wcsph_pressure(exec, s.owned, s.f, s.density, raw<Real>(tait_factor_), s.pressure,
                        s.fluid_gradient, s.boundary_gradient, s.pressure_acceleration);
-    SolverStats stats;
-    stats.iterations = 1;
-    const CompressionValue compression{s.f.rest_density, s.f.material, s.density};
-    if (s.owned.size > 0)
-      stats.avg_density_error = exec.fixed_point_sum(s.owned, compression) / double(s.owned.size);
-    stats.max_density_error = double(exec.max_of(s.owned, compression));
-    return stats;
+    return state_equation_stats(exec, s);
   }
 
   std::size_t bytes() const { return bytes_of(tait_factor_); }

@@ -97,9 +97,12 @@ int run_command(const RunArgs& args) {
   options.surface_mesher = run_surface_mesher;
   options.resume = !args.resume.empty();
   // Not kept in the checkpoint: every device gives the same bits, so a run may resume on another.
-  if (args.device != "cpu")
-    options.make_device = [&](const World& world) {
-      return make_device_pipeline(args.device, world);
+  const std::string device = args.device.value_or(scene.device);
+  const std::string device_where =
+      args.device ? std::string("--device") : scene.source.string() + ":/device";
+  if (device != "cpu")
+    options.make_device = [device, device_where](const World& world) {
+      return make_device_pipeline(device, world, device_where);
     };
   InterruptSignal interrupt;
   options.stop_requested = [&] { return interrupt.requested(); };

@@ -16,13 +16,13 @@ struct RunArgs {
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;
-  std::string solver;             // empty: the scene's own solvers
-  std::string checkpoint_every;   // empty: checkpoints only on Ctrl-C
-  std::string resume;             // a run directory to continue; then scene is empty
-  std::vector<std::string> sets;  // --set POINTER=VALUE overrides (scene_overrides.h)
-  std::string device = "cpu";     // where the steps run (device/device_pipelines.h)
-  bool render = false;            // pictures of every frame once the run is done
-  RenderArgs render_args;         // their look (the run directory is filled in)
+  std::string solver;                 // empty: the scene's own solvers
+  std::string checkpoint_every;       // empty: checkpoints only on Ctrl-C
+  std::string resume;                 // a run directory to continue; then scene is empty
+  std::vector<std::string> sets;      // --set POINTER=VALUE overrides (scene_overrides.h)
+  std::optional<std::string> device;  // where the steps run; unset: the scene's "device"
+  bool render = false;                // pictures of every frame once the run is done
+  RenderArgs render_args;             // their look (the run directory is filled in)
 };
 
 struct CompareArgs {

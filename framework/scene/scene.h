@@ -65,6 +65,7 @@ struct OutputDesc {
 struct SceneDescription {
   std::string name;
   std::filesystem::path source;
+  std::string device = "cpu";  // where `upf run` steps it unless --device says (docs/device.md)
   WorldSettings world;
   std::vector<Material> materials;  // solver params already merged with defaults
   std::vector<ContainerDesc> containers;

@@ -19,9 +19,9 @@ using nlohmann::json;
 // "render" belongs to the pictures (render/): a program that registers its section checks it,
 // others (tests, embedders) accept it unread, so one scene file serves them all.
 const std::vector<std::string> kTopKeys = {
-    "name",       "description",  "gravity", "particle_spacing", "materials",
-    "containers", "fluid_blocks", "time",    "output",           "probes",
-    "stability",  "neighbours",   "render"};
+    "name",         "description", "gravity", "particle_spacing", "materials", "containers",
+    "fluid_blocks", "time",        "output",  "probes",           "stability", "neighbours",
+    "render",       "device"};
 const std::vector<std::string> kAxisNames = {"x", "y", "z"};
 
 std::vector<std::string> spec_names(const std::vector<ParamSpec>& specs) {
@@ -459,6 +459,8 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   scene.name =
       in.string(doc, "", "name", false).value_or(std::filesystem::path(source).stem().string());
   in.string(doc, "", "description", false);
+  // Checked against the devices of the build when a run makes it (device/device_pipelines.h).
+  scene.device = in.string(doc, "", "device", false).value_or("cpu");
   if (auto g = in.vec3(doc, "", "gravity", false)) {
     scene.world.gravity = {Real((*g)[0]), Real((*g)[1]), Real((*g)[2])};
   }

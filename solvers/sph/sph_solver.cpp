@@ -10,6 +10,7 @@
 #include "solvers/fluid/sound_speed.h"
 #include "solvers/sph/sph_kernel_sets.h"
 #include "solvers/sph/sph_kernels.h"
+#include "solvers/sph/sph_steps.h"
 
 namespace upf {
 
@@ -67,47 +68,28 @@ Real SphSolver::max_time_step(const World& world) const {
                                max_viscosity_);
 }
 
-template <class Visit>
-void SphSolver::with_kernels(const World& world, Visit&& visit) const {
-  const Real h = world.settings().support_radius();
-  if (cubic_spline_) {
-    visit(CubicKernelSet{CubicSplineKernel(h)}, Real(1));
-  } else {
-    visit(MullerKernelSet{MullerKernels(h)}, poly6_scale_);
-  }
+SphKernelChoice SphSolver::kernel_choice(Real support_radius) const {
+  return {cubic_spline_, support_radius, poly6_scale_};
 }
 
 void SphSolver::add_own_non_pressure(const World& world, const FluidView& f, Real* density) {
-  const CpuExecutor& exec = world.executor();
-  const ParticleRange mine = fluid().owned.range();
-  Vec3* a_other = fluid().other_acceleration.data();
-  with_kernels(world, [&](const auto& kernels, Real density_scale) {
-    using Kernels = std::decay_t<decltype(kernels)>;
-    // The spline density is already there; another kernel's replaces it once the shared viscosity
-    // has read it at every neighbour.
-    if (!cubic_spline_)
-      exec.run(mine, SphDensityStage<Kernels>{f, kernels, density_scale, density});
-    if (mu_ > 0) exec.run(mine, SphViscosityStage<Kernels>{f, kernels, density, mu_, a_other});
-  });
+  run_sph_non_pressure(world.executor(), fluid().owned.range(), f,
+                       kernel_choice(world.settings().support_radius()), mu_, density,
+                       fluid().other_acceleration.data());
 }
 
 void SphSolver::compute_pressure(const World& world, const FluidView& f, const Real* density,
                                  Real* pressure) {
-  const CpuExecutor& exec = world.executor();
-  const ParticleRange mine = fluid().owned.range();
-  Vec3* a_p = fluid().pressure_acceleration.data();
-  exec.run(mine, SphPressureStage{f, density, stiffness_, pressure});
-  with_kernels(world, [&](const auto& kernels, Real) {
-    using Kernels = std::decay_t<decltype(kernels)>;
-    exec.run(mine, SphPressureAccelerationStage<Kernels>{f, kernels, density, pressure, a_p});
-  });
+  run_sph_pressure(world.executor(), fluid().owned.range(), f,
+                   kernel_choice(world.settings().support_radius()), stiffness_, density, pressure,
+                   fluid().pressure_acceleration.data());
 }
 
 void SphSolver::add_reactions(World& world, const FluidView& f, const Real* density,
                               const Real* pressure) const {
   // The boundary term of sph_pressure_acceleration: P_i = p_i / (2 rho_i^2), with the pressure
   // kernel of the set in use.
-  with_kernels(world, [&](const auto& kernels, Real) {
+  kernel_choice(world.settings().support_radius()).with_kernels([&](const auto& kernels, Real) {
     using Kernels = std::decay_t<decltype(kernels)>;
     fluid().add_reactions(world, f, density,
                           PressureOverDensitySquared{pressure, density, Real(0.5)},

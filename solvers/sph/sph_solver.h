@@ -45,6 +45,7 @@
 
 #include "framework/params/param_binding.h"
 #include "solvers/fluid/equation_of_state_solver.h"
+#include "solvers/sph/sph_steps.h"
 
 namespace upf {
 
@@ -64,6 +65,9 @@ class SphSolver final : public EquationOfStateSolver {
   static ParamBinding<SphParams> param_binding();
   // The stiffness in use: `stiffness`, or 2 (10 sqrt(2 g H))^2 when it is 0. Set by prepare().
   Real stiffness() const { return stiffness_; }
+  Real paper_viscosity() const { return mu_; }
+  // The kernels in use (sph_steps.h), for this solver's step and the device pipeline (device/).
+  SphKernelChoice kernel_choice(Real support_radius) const;
   // 1 / (spacing^3 sum W_poly6) over the template lattice neighbourhood: the factor that makes the
   // poly6 density of a lattice-sampled fluid equal rho0.
   static Real poly6_lattice_scale(Real spacing, Real support_radius);
@@ -77,10 +81,6 @@ class SphSolver final : public EquationOfStateSolver {
                         Real* pressure) override;
   void add_reactions(World& world, const FluidView& f, const Real* density,
                      const Real* pressure) const override;
-  // Calls visit(kernels, density_scale) with the kernel set chosen by `cubic_spline`.
-  template <class Visit>
-  void with_kernels(const World& world, Visit&& visit) const;
-
   Real requested_stiffness_;  // [m^2/s^2] 0: automatic
   Real mu_;                   // [Pa s] the paper's dynamic viscosity
   bool cubic_spline_;

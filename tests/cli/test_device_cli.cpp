@@ -50,6 +50,24 @@ TEST_F(DeviceCli, OmpWritesTheCpuRunsFramesProbesAndMetricsByteForByte) {
   EXPECT_GT(rows, 50);
 }
 
+// The scene's "device" key picks the device when --device does not; its errors name the key.
+TEST_F(DeviceCli, TheScenesDeviceKeyIsUsedAndCheckedUnlessTheOptionOverridesIt) {
+  auto doc = sample();
+  doc["device"] = "omp";
+  const std::string scene = write(doc);
+  const Result ran = run_upf("run " + scene + " -q --end 0.05 --out " + (dir_ / "key").string());
+  EXPECT_EQ(ran.code, 0) << ran.output;
+  doc["device"] = "quantum";
+  const std::string bad = write(doc, "bad.json");
+  const Result refused = run_upf("run " + bad + " -q --end 0.05 --out " + (dir_ / "bad").string());
+  EXPECT_EQ(refused.code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("bad.json:/device"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
+  const Result overridden =
+      run_upf("run " + bad + " -q --end 0.05 --device cpu --out " + (dir_ / "overridden").string());
+  EXPECT_EQ(overridden.code, 0) << overridden.output;
+}
+
 TEST_F(DeviceCli, ADeviceThatCannotRunRefusesBeforeWritingAnything) {
   const std::string scene = write(sample());
   const fs::path out = dir_ / "refused";

@@ -1,8 +1,9 @@
 // The device pipeline on Thrust's OpenMP system ("--device omp") against the CPU executor: the
-// same scene stepped both ways (PCISPH, WCSPH) gives bitwise identical particles (positions, velocities, density,
-// pressure, every field), step statistics and checkpoints, for 1 and 2 threads (DESIGN.md,
-// "Determinism": the device pipeline's CPU instantiation is bitwise the CPU path). Reference: the
-// CPU path, whose physics tests/physics checks against analytic and experimental references.
+// same scene stepped both ways (PCISPH, WCSPH, SPH) gives bitwise identical particles (positions,
+// velocities, density, pressure, every field), step statistics and checkpoints, for 1 and 2 threads
+// (DESIGN.md, "Determinism": the device pipeline's CPU instantiation is bitwise the CPU path).
+// Reference: the CPU path, whose physics tests/physics checks against analytic and experimental
+// references.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -113,6 +114,15 @@ TEST(DevicePipelineOmp, WcsphDamBreakIsBitwiseTheCpuPath) {
   expect_parity(doc, 60);
 }
 
+TEST(DevicePipelineOmp, SphWithEitherKernelSetIsBitwiseTheCpuPath) {
+  auto doc = small_dam_break();
+  doc["materials"]["water"]["solver"] = {{"name", "sph"}};
+  expect_parity(doc, 120);
+  // The paper's kernels (poly6, spiky, viscosity) with the viscosity they need to stay stable.
+  doc["materials"]["water"]["solver"] = {{"name", "sph"}, {"cubic_spline", 0}, {"viscosity", 20}};
+  expect_parity(doc, 60);
+}
+
 TEST(DevicePipelineOmp, PercentileStoppingTestIsBitwiseTheCpuPath) {
   auto doc = small_dam_break();
   doc["materials"]["water"]["solver"]["stop_percentile"] = 99;
@@ -170,7 +180,7 @@ TEST(DevicePipeline, ScenesItDoesNotCoverAreRefusedWithTheReason) {
   }
   {
     auto doc = small_dam_break();
-    doc["materials"]["water"]["solver"] = {{"name", "sph"}};
+    doc["materials"]["water"]["solver"] = {{"name", "dfsph"}};
     testing::TestWorld tw(doc, 1);
     EXPECT_THROW(make_device_pipeline("omp", *tw.world), InputError);
   }
