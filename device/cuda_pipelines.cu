@@ -7,6 +7,7 @@
 #include "device/backend_pipelines.h"
 #include "device/device_backend_cuda.cuh"
 #include "device/fluid_pipeline.h"
+#include "device/iisph_method.h"
 #include "device/pcisph_method.h"
 #include "device/sph_method.h"
 #include "device/wcsph_method.h"
@@ -54,6 +55,11 @@ void cuda_memory(std::size_t& free, std::size_t& total) {
 std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, PcisphSetup pcisph) {
   return std::make_unique<FluidPipeline<CudaBackend, PcisphMethod<CudaBackend>>>(std::move(fluid),
                                                                                  std::move(pcisph));
+}
+
+std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, IisphSetup iisph) {
+  return std::make_unique<FluidPipeline<CudaBackend, IisphMethod<CudaBackend>>>(std::move(fluid),
+                                                                                std::move(iisph));
 }
 
 std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, SphSetup sph) {

@@ -8,6 +8,7 @@
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
+#include "solvers/iisph/iisph_solver.h"
 #include "solvers/pcisph/pcisph_solver.h"
 #include "solvers/sph/sph_solver.h"
 #include "solvers/wcsph/wcsph_solver.h"
@@ -17,15 +18,15 @@ namespace upf {
 namespace {
 
 constexpr const char* kCovered =
-    "the device pipeline runs PCISPH, WCSPH or SPH liquids with frozen walls so far (no bodies, "
-    "grains or other solvers); run this scene with --device cpu";
+    "the device pipeline runs PCISPH, IISPH, WCSPH or SPH liquids with frozen walls so far (no "
+    "bodies, grains or DFSPH yet); run this scene with --device cpu";
 
 // The world's fluid solver when the pipeline covers the scene, else an InputError saying why.
 [[maybe_unused]] const Solver& covered_solver(const World& world, const std::string& where) {
   const auto& solvers = world.solvers();
   if (solvers.size() != 1 ||
       (solvers.front()->name() != "pcisph" && solvers.front()->name() != "wcsph" &&
-       solvers.front()->name() != "sph")) {
+       solvers.front()->name() != "sph" && solvers.front()->name() != "iisph")) {
     std::string names;
     for (const auto& s : solvers) names += (names.empty() ? "" : ", ") + std::string(s->name());
     throw InputError(where, "the scene's solvers are " + names + ": " + kCovered);
@@ -67,6 +68,12 @@ std::unique_ptr<DevicePipeline> make_for(const World& world, const Solver& solve
     method.predicted_density = PcisphSolver::kPredictedDensity;
     method.predicted_position = PcisphSolver::kPredictedPosition;
     return make(fluid_setup(world, solver, pcisph->fluid_state()), std::move(method));
+  }
+  if (const auto* iisph = dynamic_cast<const IisphSolver*>(&solver)) {
+    device::IisphSetup method;
+    method.solve = iisph->settings();
+    method.stop_percentile = iisph->stop_percentile();
+    return make(fluid_setup(world, solver, iisph->fluid_state()), std::move(method));
   }
   if (const auto* sph = dynamic_cast<const SphSolver*>(&solver)) {
     device::SphSetup method;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "framework/core/vec3.h"
+#include "solvers/iisph/iisph_solve.h"
 #include "solvers/pcisph/pcisph_correction_loop.h"
 #include "solvers/sph/sph_steps.h"
 
@@ -37,6 +38,12 @@ struct PcisphSetup {
 struct WcsphSetup {
   std::vector<Real> tait_factor;  // per material: B = rho0 c^2 / 7
   Real artificial_viscosity = 0;  // 2 alpha h c; 0: none
+};
+
+// IisphSolver's solve and stopping test (Ihmsen et al. 2014).
+struct IisphSetup {
+  IisphSettings solve{};
+  double stop_percentile = 0;
 };
 
 // SphSolver's constants (Müller et al. 2003).

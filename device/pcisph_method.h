@@ -1,33 +1,19 @@
 // PCISPH's pressure stage (Solenthaler & Pajarola 2009) in the device pipeline (fluid_pipeline.h):
 // the positions of the particles it does not move predicted once, then the shared correction loop
-// (pcisph_correction_loop.h) with a stopping error computed on the device: the average by an exact
-// fixed-point sum, the maximum exactly, a percentile by a sort (StoppingError's values).
+// (pcisph_correction_loop.h) with the stopping error computed on the device (stopping_error.h).
 #pragma once
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <utility>
-
-#include <thrust/sort.h>
 
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
 #include "device/fluid_setup.h"
+#include "device/stopping_error.h"
 #include "solvers/fluid/fluid_stages.h"
 #include "solvers/pcisph/pcisph_correction_loop.h"
 
 namespace upf::device {
-
-namespace pcisph_detail {
-// The compression of the k-th owned particle into out[k].
-struct ListedCompressionStage {
-  ParticleRange listed;
-  CompressionValue value;
-  Real* out;
-  UPF_HD void operator()(std::size_t k) const { out[k] = value(listed[k]); }
-};
-}  // namespace pcisph_detail
 
 template <class Backend>
 class PcisphMethod {
@@ -36,7 +22,8 @@ class PcisphMethod {
 
  public:
   using Setup = PcisphSetup;
-  explicit PcisphMethod(PcisphSetup setup) : setup_(std::move(setup)) {}
+  explicit PcisphMethod(PcisphSetup setup)
+      : setup_(std::move(setup)), stopping_(setup_.stop_percentile) {}
 
   void bind(DeviceParticles<Backend>& p) {
     rho_star_ = &p.scalar_array(setup_.predicted_density);
@@ -64,29 +51,14 @@ class PcisphMethod {
                                   s.pressure};
     return pcisph_correction_loop(
         exec, arrays, setup_.loop, s.dt,
-        [&](const CompressionValue& value) { return stopping_error(exec, s.owned, value); });
+        [&](const CompressionValue& value) { return stopping_(s.owned, value); });
   }
 
-  std::size_t bytes() const { return bytes_of(compressions_); }
+  std::size_t bytes() const { return stopping_.bytes(); }
 
  private:
-  template <class Executor>
-  double stopping_error(const Executor& exec, ParticleRange owned, const CompressionValue& value) {
-    const double percentile = setup_.stop_percentile;
-    if (owned.size == 0) return 0.0;
-    if (percentile <= 0) return exec.fixed_point_sum(owned, value) / double(owned.size);
-    if (percentile >= 100) return double(exec.max_of(owned, value));
-    compressions_.resize(owned.size);
-    exec.run(all_particles(owned.size),
-             pcisph_detail::ListedCompressionStage{owned, value, raw<Real>(compressions_)});
-    thrust::sort(Backend::policy(), compressions_.begin(), compressions_.end());
-    const auto rank =
-        std::size_t(std::max(1.0, std::ceil(percentile / 100.0 * double(owned.size)))) - 1;
-    return double(compressions_[rank]);
-  }
-
   PcisphSetup setup_;
-  vector<Real> compressions_;
+  DeviceStoppingError<Backend> stopping_;
   vector<Real>* rho_star_ = nullptr;
   vector<Vec3>* x_star_ = nullptr;
 };

@@ -6,7 +6,7 @@
 #include "framework/world/world.h"
 #include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_time_step.h"
-#include "solvers/iisph/iisph_kernels.h"
+#include "solvers/iisph/iisph_solve.h"
 
 namespace upf {
 
@@ -51,6 +51,7 @@ void IisphSolver::step(World& world, Real dt, StageRunner& run) {
   FluidView f;
   Real* density = nullptr;
   Real* pressure = nullptr;
+  IisphArrays arrays{};
   stats_ = SolverStats{};
 
   run("non_pressure", [&] {
@@ -62,52 +63,30 @@ void IisphSolver::step(World& world, Real dt, StageRunner& run) {
     boundary_divergence_.resize(n);
     rho_adv_.resize(n);
     predicted_.resize(n);
+    next_.resize(n);
     v_adv_.resize(n);
-    std::fill(fluid_.pressure_acceleration.begin(), fluid_.pressure_acceleration.end(), Vec3{});
-    exec.run(fluid_.owned.range(),
-             InverseDiagonalStage{f, fluid_.fluid_gradient.data(), fluid_.boundary_gradient.data(),
-                                  inverse_diagonal_.data()});
-    exec.run(fluid_.owned.range(), BoundaryVelocityDivergenceStage{f, boundary_divergence_.data()});
+    arrays = {f,
+              fluid_.owned.range(),
+              n,
+              fluid_.fluid_gradient.data(),
+              fluid_.boundary_gradient.data(),
+              fluid_.other_acceleration.data(),
+              density,
+              fluid_.pressure_acceleration.data(),
+              pressure,
+              inverse_diagonal_.data(),
+              boundary_divergence_.data(),
+              rho_adv_.data(),
+              predicted_.data(),
+              next_.data(),
+              v_adv_.data()};
+    run_iisph_non_pressure(exec, arrays);
   });
 
   run("pressure", [&] {
-    const ParticleRange owned = fluid_.owned.range();
-    exec.run(all_particles(n), CopyVelocityStage{p.velocity.data(), v_adv_.data()});
-    exec.run(owned, VelocityKickStage{fluid_.other_acceleration.data(), dt, v_adv_.data()});
-    exec.run(owned, IisphAdvectedDensityStage{
-                        f, fluid_.fluid_gradient.data(), fluid_.boundary_gradient.data(),
-                        boundary_divergence_.data(), density, v_adv_.data(), dt, rho_adv_.data()});
-    exec.run(owned, HalvePressureStage{pressure});
-    next_.assign(pressure, pressure + n);  // particles not owned keep their pressure in both
-    Real* current = pressure;
-    Real* next = next_.data();
-    Vec3* a_p = fluid_.pressure_acceleration.data();
-    double error = 0;
-    int iteration = 0;
-    while (iteration < params_.max_iterations) {
-      exec.run(owned, IisphPressureAccelerationStage{f, fluid_.fluid_gradient.data(),
-                                                     fluid_.boundary_gradient.data(), density,
-                                                     current, a_p});
-      exec.run(owned, IisphPressureUpdateStage{
-                          f, fluid_.fluid_gradient.data(), fluid_.boundary_gradient.data(), density,
-                          inverse_diagonal_.data(), rho_adv_.data(), a_p, current, dt,
-                          Real(params_.omega), predicted_.data(), next});
-      // An exact stopping error (a fixed-point sum for the average): the same iteration count
-      // for any thread count.
-      error = stopping_(exec, fluid_.owned, f, predicted_.data());
-      std::swap(current, next);
-      ++iteration;
-      if (iteration >= params_.min_iterations && error <= params_.eta) break;
-    }
-    if (current != pressure) exec.run(owned, CopyScalarStage{current, pressure});
-    exec.run(owned, IisphPressureAccelerationStage{f, fluid_.fluid_gradient.data(),
-                                                   fluid_.boundary_gradient.data(), density,
-                                                   pressure, a_p});
-    stats_.iterations = iteration;
-    stats_.avg_density_error = stopping_.is_average()
-                                   ? error
-                                   : average_compression(exec, fluid_.owned, f, predicted_.data());
-    stats_.max_density_error = max_compression(exec, fluid_.owned, f, predicted_.data());
+    stats_ = iisph_pressure_solve(exec, arrays, settings(), dt, [&](const CompressionValue&) {
+      return stopping_(exec, fluid_.owned, f, predicted_.data());
+    });
   });
 
   run("integration", [&] {

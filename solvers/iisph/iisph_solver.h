@@ -22,6 +22,7 @@
 #include "framework/solver/solver.h"
 #include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_solver_state.h"
+#include "solvers/iisph/iisph_solve.h"
 
 namespace upf {
 
@@ -42,6 +43,15 @@ class IisphSolver final : public Solver {
   std::vector<std::string> stages() const override;
   void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
+
+  // What the device pipeline needs to run this solver's step (device/): the solve's settings
+  // (iisph_solve.h), the stopping test and the shared fluid state.
+  IisphSettings settings() const {
+    return {params_.eta, params_.min_iterations, params_.max_iterations, params_.omega,
+            stopping_.is_average()};
+  }
+  double stop_percentile() const { return stopping_.percentile(); }
+  const FluidSolverState& fluid_state() const { return fluid_; }
 
   static ParamBinding<IisphParams> param_binding();
 

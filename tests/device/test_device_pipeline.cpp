@@ -1,9 +1,9 @@
 // The device pipeline on Thrust's OpenMP system ("--device omp") against the CPU executor: the
-// same scene stepped both ways (PCISPH, WCSPH, SPH) gives bitwise identical particles (positions,
-// velocities, density, pressure, every field), step statistics and checkpoints, for 1 and 2 threads
-// (DESIGN.md, "Determinism": the device pipeline's CPU instantiation is bitwise the CPU path).
-// Reference: the CPU path, whose physics tests/physics checks against analytic and experimental
-// references.
+// same scene stepped both ways (PCISPH, IISPH, WCSPH, SPH) gives bitwise identical particles
+// (positions, velocities, density, pressure, every field), step statistics and checkpoints, for 1
+// and 2 threads (DESIGN.md, "Determinism": the device pipeline's CPU instantiation is bitwise the
+// CPU path). Reference: the CPU path, whose physics tests/physics checks against analytic and
+// experimental references.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -121,6 +121,14 @@ TEST(DevicePipelineOmp, SphWithEitherKernelSetIsBitwiseTheCpuPath) {
   // The paper's kernels (poly6, spiky, viscosity) with the viscosity they need to stay stable.
   doc["materials"]["water"]["solver"] = {{"name", "sph"}, {"cubic_spline", 0}, {"viscosity", 20}};
   expect_parity(doc, 60);
+}
+
+TEST(DevicePipelineOmp, IisphDamBreakIsBitwiseTheCpuPath) {
+  auto doc = small_dam_break();
+  doc["materials"]["water"]["solver"] = {{"name", "iisph"}};
+  expect_parity(doc, 120);
+  doc["materials"]["water"]["solver"] = {{"name", "iisph"}, {"stop_percentile", 95}};
+  expect_parity(doc, 40);
 }
 
 TEST(DevicePipelineOmp, PercentileStoppingTestIsBitwiseTheCpuPath) {

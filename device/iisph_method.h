@@ -1,0 +1,77 @@
+// IISPH's pressure stage (Ihmsen et al. 2014) in the device pipeline (fluid_pipeline.h): the
+// diagonal and boundary divergence after the shared forces, then the relaxed Jacobi solve
+// (iisph_solve.h, what IisphSolver runs) with the stopping error computed on the device
+// (stopping_error.h). Its work arrays live here; the pressure field, the warm start of the next
+// step, lives with the particles.
+#pragma once
+
+#include <cstddef>
+#include <utility>
+
+#include "device/device_particles.h"
+#include "device/device_primitives.h"
+#include "device/fluid_setup.h"
+#include "device/stopping_error.h"
+#include "solvers/iisph/iisph_solve.h"
+
+namespace upf::device {
+
+template <class Backend>
+class IisphMethod {
+  template <class T>
+  using vector = typename Backend::template vector<T>;
+
+ public:
+  using Setup = IisphSetup;
+  explicit IisphMethod(IisphSetup setup)
+      : setup_(std::move(setup)), stopping_(setup_.stop_percentile) {}
+
+  void bind(DeviceParticles<Backend>&) {}
+
+  template <class Executor, class Step>
+  void non_pressure(const Executor& exec, const Step& s) {
+    for (auto* a : {&inverse_diagonal_, &boundary_divergence_, &rho_adv_, &predicted_, &next_})
+      a->resize(s.n);
+    v_adv_.resize(s.n);
+    run_iisph_non_pressure(exec, arrays(s));
+  }
+
+  template <class Executor, class Step>
+  SolverStats pressure(const Executor& exec, const Step& s) {
+    return iisph_pressure_solve(
+        exec, arrays(s), setup_.solve, s.dt,
+        [&](const CompressionValue& value) { return stopping_(s.owned, value); });
+  }
+
+  std::size_t bytes() const {
+    return bytes_of(inverse_diagonal_) + bytes_of(boundary_divergence_) + bytes_of(rho_adv_) +
+           bytes_of(predicted_) + bytes_of(next_) + bytes_of(v_adv_) + stopping_.bytes();
+  }
+
+ private:
+  template <class Step>
+  IisphArrays arrays(const Step& s) {
+    return {s.f,
+            s.owned,
+            s.n,
+            s.fluid_gradient,
+            s.boundary_gradient,
+            s.other_acceleration,
+            s.density,
+            s.pressure_acceleration,
+            s.pressure,
+            raw<Real>(inverse_diagonal_),
+            raw<Real>(boundary_divergence_),
+            raw<Real>(rho_adv_),
+            raw<Real>(predicted_),
+            raw<Real>(next_),
+            raw<Vec3>(v_adv_)};
+  }
+
+  IisphSetup setup_;
+  DeviceStoppingError<Backend> stopping_;
+  vector<Real> inverse_diagonal_, boundary_divergence_, rho_adv_, predicted_, next_;
+  vector<Vec3> v_adv_;
+};
+
+}  // namespace upf::device

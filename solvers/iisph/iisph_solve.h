@@ -1,0 +1,106 @@
+// IISPH's step (Ihmsen et al. 2014) after the shared forces, written once for every executor:
+// IisphSolver runs it on the CPU executor, the device pipeline on its backends (device/). Plain
+// views and an executor with run / fixed_point_sum / max_of, so the same statements give the
+// same bits wherever they run. C++17: nvcc builds it too.
+#pragma once
+
+#include <cstddef>
+#include <utility>
+
+#include "framework/executors/particle_range.h"
+#include "framework/solver/solver.h"
+#include "solvers/fluid/density_rate.h"
+#include "solvers/fluid/fluid_stages.h"
+#include "solvers/iisph/iisph_kernels.h"
+
+namespace upf {
+
+struct IisphArrays {
+  FluidView f;
+  ParticleRange owned;
+  std::size_t n;  // all particles
+  const Vec3* fluid_gradient;
+  const Vec3* boundary_gradient;
+  const Vec3* other_acceleration;
+  const Real* density;
+  Vec3* pressure_acceleration;
+  Real* pressure;  // the field: last step's pressures in, this step's out
+  // Per-step work arrays over all particles.
+  Real* inverse_diagonal;
+  Real* boundary_divergence;
+  Real* rho_adv;
+  Real* predicted;
+  Real* next;
+  Vec3* v_adv;
+};
+
+struct IisphSettings {
+  double eta;
+  int min_iterations, max_iterations;
+  double omega;           // relaxation of the Jacobi update
+  bool stops_on_average;  // the stopping error is the average compression (stop_percentile 0)
+};
+
+// Zeroes a vector per particle.
+struct ClearVectorStage {
+  Vec3* v;
+  UPF_HD void operator()(std::uint32_t i) const { v[i] = Vec3{}; }
+};
+
+// The "non_pressure" part after the shared forces: no pressure acceleration yet, the diagonal
+// of the pressure system and the boundary particles' velocity divergence.
+template <class Executor>
+void run_iisph_non_pressure(const Executor& exec, const IisphArrays& a) {
+  exec.run(all_particles(a.n), ClearVectorStage{a.pressure_acceleration});
+  exec.run(a.owned,
+           InverseDiagonalStage{a.f, a.fluid_gradient, a.boundary_gradient, a.inverse_diagonal});
+  exec.run(a.owned, BoundaryVelocityDivergenceStage{a.f, a.boundary_divergence});
+}
+
+// The pressure solve: advected velocities and densities, the warm start (half the last
+// pressures), relaxed Jacobi iterations until the stopping error (stopping_error(value) over
+// the predicted densities' CompressionValue) is at most eta after min_iterations, then the
+// pressure acceleration of the final pressures.
+template <class Executor, class StoppingErrorOf>
+SolverStats iisph_pressure_solve(const Executor& exec, const IisphArrays& a, const IisphSettings& s,
+                                 Real dt, StoppingErrorOf&& stopping_error) {
+  exec.run(all_particles(a.n), CopyVelocityStage{a.f.v, a.v_adv});
+  exec.run(a.owned, VelocityKickStage{a.other_acceleration, dt, a.v_adv});
+  exec.run(a.owned,
+           IisphAdvectedDensityStage{a.f, a.fluid_gradient, a.boundary_gradient,
+                                     a.boundary_divergence, a.density, a.v_adv, dt, a.rho_adv});
+  exec.run(a.owned, HalvePressureStage{a.pressure});
+  // Particles not owned keep their pressure in both buffers.
+  exec.run(all_particles(a.n), CopyScalarStage{a.pressure, a.next});
+  Real* current = a.pressure;
+  Real* next = a.next;
+  const CompressionValue compression{a.f.rest_density, a.f.material, a.predicted};
+  double error = 0;
+  int iteration = 0;
+  while (iteration < s.max_iterations) {
+    exec.run(a.owned, IisphPressureAccelerationStage{a.f, a.fluid_gradient, a.boundary_gradient,
+                                                     a.density, current, a.pressure_acceleration});
+    exec.run(a.owned,
+             IisphPressureUpdateStage{a.f, a.fluid_gradient, a.boundary_gradient, a.density,
+                                      a.inverse_diagonal, a.rho_adv, a.pressure_acceleration,
+                                      current, dt, Real(s.omega), a.predicted, next});
+    // An exact stopping error (a fixed-point sum for the average): the same iteration count
+    // for any thread count and any backend.
+    error = stopping_error(compression);
+    std::swap(current, next);
+    ++iteration;
+    if (iteration >= s.min_iterations && error <= s.eta) break;
+  }
+  if (current != a.pressure) exec.run(a.owned, CopyScalarStage{current, a.pressure});
+  exec.run(a.owned, IisphPressureAccelerationStage{a.f, a.fluid_gradient, a.boundary_gradient,
+                                                   a.density, a.pressure, a.pressure_acceleration});
+  SolverStats stats;
+  stats.iterations = iteration;
+  stats.avg_density_error = s.stops_on_average || a.owned.size == 0
+                                ? error
+                                : exec.fixed_point_sum(a.owned, compression) / double(a.owned.size);
+  stats.max_density_error = double(exec.max_of(a.owned, compression));
+  return stats;
+}
+
+}  // namespace upf
