@@ -128,6 +128,18 @@ std::vector<std::string> device_names() {
   return names;
 }
 
+void check_device(std::string_view name, const World& world, const std::string& where) {
+  const std::vector<std::string> names = device_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    if (name == "omp" || name == "cuda") make_device_pipeline(name, world, where);  // says why
+    std::string allowed;
+    for (const std::string& n : names) allowed += (allowed.empty() ? "" : ", ") + n;
+    throw InputError(where,
+                     "'" + std::string(name) + "' is not a device (allowed: " + allowed + ")");
+  }
+  if (name != "cpu") covered_solver(world, where);
+}
+
 std::unique_ptr<DevicePipeline> make_device_pipeline(std::string_view name, const World& world,
                                                      const std::string& where) {
   if (name == "cpu") return nullptr;

@@ -33,6 +33,9 @@ double copy_bandwidth_gbps(std::string_view device, std::size_t bytes);
 
 // The names --device accepts, in this build.
 std::vector<std::string> device_names();
+// What make_device_pipeline checks of the name and the scene, without touching a GPU: for
+// `upf validate`. Throws InputError.
+void check_device(std::string_view name, const World& world, const std::string& where);
 // The pipeline `name` for `world` (prepared), or null for "cpu". `where` names the option or
 // JSON path for errors.
 std::unique_ptr<DevicePipeline> make_device_pipeline(std::string_view name, const World& world,

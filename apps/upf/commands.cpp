@@ -215,12 +215,14 @@ int validate_command(const std::vector<std::string>& files, const std::vector<st
   for (const auto& f : files) {
     try {
       const SceneDescription scene = load_with_overrides(f, sets, registry).scene;
-      // Which fields exist is known once the solvers have declared theirs: with names given,
-      // build and prepare the world as `upf run` does before it writes, and check them.
-      if (scene.output.fields) {
+      // Which fields exist is known once the solvers have declared theirs, and whether the
+      // scene's device covers it once the world is built: then build and prepare the world as
+      // `upf run` does before it writes, and check them (the device without touching a GPU).
+      if (scene.output.fields || scene.device != "cpu") {
         const auto world = build_world(scene, registry, 0);
         world->prepare();
-        check_output_fields(scene, world->particles());
+        if (scene.output.fields) check_output_fields(scene, world->particles());
+        check_device(scene.device, *world, scene.source.string() + ":/device");
       }
       std::printf("%s: ok (%.0f particles)\n", f.c_str(), scene.estimated_particles());
     } catch (const InputError& e) {

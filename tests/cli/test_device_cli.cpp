@@ -59,6 +59,16 @@ TEST_F(DeviceCli, TheScenesDeviceKeyIsUsedAndCheckedUnlessTheOptionOverridesIt) 
   EXPECT_EQ(ran.code, 0) << ran.output;
   doc["device"] = "quantum";
   const std::string bad = write(doc, "bad.json");
+  // validate checks the key as run does.
+  const Result validated = run_upf("validate " + bad);
+  EXPECT_EQ(validated.code, 2) << validated.output;
+  EXPECT_NE(validated.output.find("bad.json:/device"), std::string::npos) << validated.output;
+  EXPECT_NE(validated.output.find("allowed: cpu"), std::string::npos) << validated.output;
+  doc["device"] = "omp";
+  doc["materials"]["water"]["solver"] = {{"name", "dfsph"}};
+  const Result uncovered = run_upf("validate " + write(doc, "dfsph.json"));
+  EXPECT_EQ(uncovered.code, 2) << uncovered.output;
+  EXPECT_NE(uncovered.output.find("--device cpu"), std::string::npos) << uncovered.output;
   const Result refused = run_upf("run " + bad + " -q --end 0.05 --out " + (dir_ / "bad").string());
   EXPECT_EQ(refused.code, 2) << refused.output;
   EXPECT_NE(refused.output.find("bad.json:/device"), std::string::npos) << refused.output;
