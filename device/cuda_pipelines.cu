@@ -6,11 +6,7 @@
 
 #include "device/backend_pipelines.h"
 #include "device/device_backend_cuda.cuh"
-#include "device/fluid_pipeline.h"
-#include "device/iisph_method.h"
-#include "device/pcisph_method.h"
-#include "device/sph_method.h"
-#include "device/wcsph_method.h"
+#include "device/pipeline_factory.h"
 
 namespace upf::device {
 
@@ -52,24 +48,15 @@ void cuda_memory(std::size_t& free, std::size_t& total) {
   if (cudaMemGetInfo(&free, &total) != cudaSuccess) free = total = 0;
 }
 
-std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, PcisphSetup pcisph) {
-  return std::make_unique<FluidPipeline<CudaBackend, PcisphMethod<CudaBackend>>>(std::move(fluid),
-                                                                                 std::move(pcisph));
+template <class Setup>
+std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, Setup method) {
+  return make_pipeline<CudaBackend>(std::move(fluid), std::move(method));
 }
 
-std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, IisphSetup iisph) {
-  return std::make_unique<FluidPipeline<CudaBackend, IisphMethod<CudaBackend>>>(std::move(fluid),
-                                                                                std::move(iisph));
-}
-
-std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, SphSetup sph) {
-  return std::make_unique<FluidPipeline<CudaBackend, SphMethod<CudaBackend>>>(std::move(fluid),
-                                                                              std::move(sph));
-}
-
-std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, WcsphSetup wcsph) {
-  return std::make_unique<FluidPipeline<CudaBackend, WcsphMethod<CudaBackend>>>(std::move(fluid),
-                                                                                std::move(wcsph));
-}
+template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, PcisphSetup);
+template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, IisphSetup);
+template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, DfsphSetup);
+template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, WcsphSetup);
+template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, SphSetup);
 
 }  // namespace upf::device

@@ -8,6 +8,7 @@
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
+#include "solvers/dfsph/dfsph_solver.h"
 #include "solvers/iisph/iisph_solver.h"
 #include "solvers/pcisph/pcisph_solver.h"
 #include "solvers/sph/sph_solver.h"
@@ -18,23 +19,22 @@ namespace upf {
 namespace {
 
 constexpr const char* kCovered =
-    "the device pipeline runs PCISPH, IISPH, WCSPH or SPH liquids with frozen walls so far (no "
-    "bodies, grains or DFSPH yet); run this scene with --device cpu";
+    "the device pipeline runs PCISPH, IISPH, DFSPH, WCSPH or SPH liquids with frozen walls and "
+    "rigid bodies so far (no grains yet); run this scene with --device cpu";
 
 // The world's fluid solver when the pipeline covers the scene, else an InputError saying why.
 [[maybe_unused]] const Solver& covered_solver(const World& world, const std::string& where) {
   const auto& solvers = world.solvers();
   if (solvers.size() != 1 ||
       (solvers.front()->name() != "pcisph" && solvers.front()->name() != "wcsph" &&
-       solvers.front()->name() != "sph" && solvers.front()->name() != "iisph")) {
+       solvers.front()->name() != "sph" && solvers.front()->name() != "iisph" &&
+       solvers.front()->name() != "dfsph")) {
     std::string names;
     for (const auto& s : solvers) names += (names.empty() ? "" : ", ") + std::string(s->name());
     throw InputError(where, "the scene's solvers are " + names + ": " + kCovered);
   }
-  if (!world.body_systems().empty())
-    throw InputError(where, std::string("the scene has rigid bodies: ") + kCovered);
   const Particles& p = world.particles();
-  for (ParticleType t : {ParticleType::Rigid, ParticleType::Granular})
+  for (ParticleType t : {ParticleType::Granular})
     if (p.count(t) > 0)
       throw InputError(where,
                        "the scene has " + std::string(to_string(t)) + " particles: " + kCovered);
@@ -53,6 +53,7 @@ constexpr const char* kCovered =
   setup.gravity = world.settings().gravity;
   setup.support_radius = world.settings().support_radius();
   setup.reorder_every = world.settings().reorder_every;
+  setup.reactions = fluid.reaction_list >= 0;
   setup.threads = world.executor().threads();
   setup.stages = solver.stages();
   return setup;
@@ -74,6 +75,14 @@ std::unique_ptr<DevicePipeline> make_for(const World& world, const Solver& solve
     method.solve = iisph->settings();
     method.stop_percentile = iisph->stop_percentile();
     return make(fluid_setup(world, solver, iisph->fluid_state()), std::move(method));
+  }
+  if (const auto* dfsph = dynamic_cast<const DfsphSolver*>(&solver)) {
+    device::DfsphSetup method;
+    method.solve = dfsph->settings();
+    method.stop_percentile = dfsph->stop_percentile();
+    method.density_stiffness = DfsphSolver::kDensityStiffness;
+    method.divergence_stiffness = DfsphSolver::kDivergenceStiffness;
+    return make(fluid_setup(world, solver, dfsph->fluid_state()), std::move(method));
   }
   if (const auto* sph = dynamic_cast<const SphSolver*>(&solver)) {
     device::SphSetup method;

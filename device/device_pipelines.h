@@ -6,7 +6,8 @@
 //         without a GPU, and what every CI run tests
 //   cuda  the device pipeline on an NVIDIA GPU (sm_80, sm_90)
 //
-// The pipeline covers PCISPH, IISPH, WCSPH and SPH liquids with frozen walls so far; another
+// The pipeline covers PCISPH, IISPH, DFSPH, WCSPH and SPH liquids with frozen walls and bodies so
+// far (not grains); another
 // scene, a backend this build lacks, or no usable GPU is an InputError that says which.
 #pragma once
 

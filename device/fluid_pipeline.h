@@ -2,14 +2,15 @@
 // (pcisph_method.h, wcsph_method.h): the world's step (World::step) and the fluid solvers' shared
 // step (FluidSolverState) with the solvers' own stage structs and orchestration, on device arrays.
 //
-// A step: the last good state (a device copy), reordering on the world's cadence, the device
-// grid's lists (liquid -> liquid, liquid -> boundary), then the three stages "non_pressure"
-// (shared forces, then the method's own), "pressure" (the method's) and "integration", timed like
-// the CPU's. Every per-particle stage and
-// every reduction gives the CPU executor's bits (device_primitives.h, device_grid.h), so frames of
-// this pipeline equal the CPU's bit for bit (tests/device). Scenes it does not cover yet are
-// refused by make_device_pipeline, never run half-way. Its inputs are plain values
-// (pcisph_setup.h): no world header reaches nvcc.
+// A step: the last good state (a device copy), the bodies' placement (device_bodies.h, driven by
+// the host's body system), reordering on the world's cadence, the device grid's lists (liquid ->
+// liquid, liquid -> boundary, and rigid -> liquid when bodies take reactions), then the three
+// stages "non_pressure" (shared forces, then the method's own), "pressure" (the method's) and
+// "integration" (reactions on bodies, then symplectic Euler), timed like the CPU's. Every
+// per-particle stage and every reduction gives the CPU executor's bits (device_primitives.h,
+// device_grid.h), so frames of this pipeline equal the CPU's bit for bit (tests/device). Scenes it
+// does not cover yet are refused by make_device_pipeline, never run half-way. Its inputs are plain
+// values (pcisph_setup.h): no world header reaches nvcc.
 #pragma once
 
 #include <algorithm>
@@ -21,8 +22,10 @@
 #include <vector>
 
 #include <thrust/copy.h>
+#include <thrust/fill.h>
 #include <thrust/sort.h>
 
+#include "device/device_bodies.h"
 #include "device/device_grid.h"
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
@@ -80,6 +83,8 @@ struct BlockSumStage {
 // What a pressure method sees of a step: the view, the owned particles and the shared buffers.
 struct FluidStep {
   FluidView f;
+  NeighbourView fluid_of_boundary;  // rigid -> liquid; null offsets: no reactions wanted
+  Vec3* boundary_force;             // the reactions on rigid particles
   ParticleRange owned;
   OwnedMaterials owns;
   std::size_t n;  // all particles
@@ -135,14 +140,14 @@ class FluidPipeline final : public DevicePipeline {
     const typename Backend::ThreadScope threads(threads_);
     const std::size_t n = particles_.size();
     const std::size_t blocks = (n + kBlockSumSize - 1) / kBlockSumSize;
-    vector<double> partial(blocks);
+    block_partials_.resize(blocks);
     for_each_index<Backend>(
         blocks, pipeline_detail::BlockSumStage<KineticEnergyValue>{
                     KineticEnergyValue{raw<Real>(particles_.mass), raw<Vec3>(particles_.velocity)},
-                    n, raw<double>(partial)});
+                    n, raw<double>(block_partials_)});
     // The blocks in order, on the host, as block_sum adds them.
     double total = 0;
-    for (double p : std::vector<double>(partial.begin(), partial.end())) total += p;
+    for (double p : std::vector<double>(block_partials_.begin(), block_partials_.end())) total += p;
     return total;
   }
 
@@ -153,7 +158,9 @@ class FluidPipeline final : public DevicePipeline {
            boundary_list_.bytes() + bytes_of(owned_) + bytes_of(fluid_gradient_) +
            bytes_of(boundary_gradient_) + bytes_of(other_acceleration_) +
            bytes_of(pressure_acceleration_) + method_.bytes() + bytes_of(rest_density_) +
-           bytes_of(viscosity_) + bytes_of(boundary_viscosity_) + bytes_of(owns_);
+           bytes_of(viscosity_) + bytes_of(boundary_viscosity_) + bytes_of(owns_) +
+           reaction_list_.bytes() + bytes_of(boundary_force_) + bodies_.bytes() +
+           bytes_of(block_partials_);
   }
 
   std::size_t first_broken_particle(double max_speed) const override {
@@ -164,9 +171,35 @@ class FluidPipeline final : public DevicePipeline {
                                         raw<Vec3>(particles_.velocity), max_speed * max_speed});
   }
 
-  void step(std::uint64_t step_count, double dt, StepReport& report) override {
+  void save_last_good() override {
     const typename Backend::ThreadScope threads(threads_);
     particles_.snapshot_into(last_good_);
+  }
+
+  void place_body_particles(const std::vector<BodyPose>& poses,
+                            const std::string& local_field) override {
+    const typename Backend::ThreadScope threads(threads_);
+    bodies_.place(particles_, poses, local_field);
+  }
+
+  void body_wrenches(const std::vector<Vec3d>& origins,
+                     std::vector<BodyWrench>& wrenches) override {
+    const typename Backend::ThreadScope threads(threads_);
+    bodies_.wrenches(particles_, boundary_force_, origins, wrenches);
+  }
+
+  void guard_body_surfaces(const std::vector<BodyPose>& poses,
+                           const std::vector<const MeshParityData*>& meshes, double layer_depth,
+                           double clearance, const std::string& local_field,
+                           const std::string& normal_field,
+                           std::vector<SurfaceHit>& hits) override {
+    const typename Backend::ThreadScope threads(threads_);
+    bodies_.guard(particles_, boundary_list_.view(), poses, meshes, layer_depth, clearance,
+                  local_field, normal_field, hits);
+  }
+
+  void step(std::uint64_t step_count, double dt, StepReport& report) override {
+    const typename Backend::ThreadScope threads(threads_);
     const Stopwatch neighbours;
     update_neighbours(step_count);
     report.neighbour_ms = neighbours.elapsed_ms();
@@ -201,6 +234,12 @@ class FluidPipeline final : public DevicePipeline {
     const TypeMask targets[2] = {kLiquidMask, kBoundaryMask};
     DeviceNeighbourList<Backend>* outs[2] = {&fluid_list_, &boundary_list_};
     grid_.find_neighbours(type(), kLiquidMask, targets, 2, setup_.support_radius, outs);
+    if (setup_.reactions) {
+      const TypeMask liquid[1] = {kLiquidMask};
+      DeviceNeighbourList<Backend>* reaction[1] = {&reaction_list_};
+      grid_.find_neighbours(type(), mask_of(ParticleType::Rigid), liquid, 1, setup_.support_radius,
+                            reaction);
+    }
   }
 
   FluidView fluid_view() const {
@@ -243,6 +282,13 @@ class FluidPipeline final : public DevicePipeline {
     step.density = raw<Real>(*density_);
     step.pressure = raw<Real>(*pressure_);
     step.owns = owned_materials();
+    // The world's coupling arrays start each step at zero.
+    if (setup_.reactions) {
+      boundary_force_.resize(n);
+      thrust::fill(Backend::policy(), boundary_force_.begin(), boundary_force_.end(), Vec3{});
+      step.fluid_of_boundary = reaction_list_.view();
+      step.boundary_force = raw<Vec3>(boundary_force_);
+    }
 
     stages_("non_pressure", [&] {
       step.owned = rebuild_owned();
@@ -262,12 +308,22 @@ class FluidPipeline final : public DevicePipeline {
       method_.non_pressure(exec, step);
     });
 
+    if constexpr (Method::kDivergenceStage)
+      stages_("divergence", [&] { method_.divergence(exec, step); });
+
     stages_("pressure", [&] { stats_ = method_.pressure(exec, step); });
 
     stages_("integration", [&] {
-      run<Backend>(step.owned, SymplecticEulerStage{
-                                   step.other_acceleration, step.pressure_acceleration, dt,
-                                   raw<Vec3>(particles_.velocity), raw<Vec3>(particles_.position)});
+      if (step.boundary_force) method_.add_reactions(exec, step);
+      if constexpr (Method::kOwnIntegration) {
+        method_.integrate(exec, step, raw<Vec3>(particles_.velocity),
+                          raw<Vec3>(particles_.position));
+      } else {
+        run<Backend>(
+            step.owned,
+            SymplecticEulerStage{step.other_acceleration, step.pressure_acceleration, dt,
+                                 raw<Vec3>(particles_.velocity), raw<Vec3>(particles_.position)});
+      }
     });
   }
 
@@ -275,7 +331,10 @@ class FluidPipeline final : public DevicePipeline {
   Method method_;
   DeviceParticles<Backend> particles_, last_good_;
   DeviceGrid<Backend> grid_;
-  DeviceNeighbourList<Backend> fluid_list_, boundary_list_;
+  DeviceNeighbourList<Backend> fluid_list_, boundary_list_, reaction_list_;
+  DeviceBodies<Backend> bodies_;
+  vector<Vec3> boundary_force_;
+  mutable vector<double> block_partials_;
   StageRunner stages_;
   int threads_;
   std::size_t counts_[kParticleTypeCount] = {};

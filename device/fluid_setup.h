@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "framework/core/vec3.h"
+#include "solvers/dfsph/dfsph_steps.h"
 #include "solvers/iisph/iisph_solve.h"
 #include "solvers/pcisph/pcisph_correction_loop.h"
 #include "solvers/sph/sph_steps.h"
@@ -22,6 +23,7 @@ struct FluidSetup {
   Vec3 gravity{};
   Real support_radius = 0;
   int reorder_every = 0;
+  bool reactions = false;  // rigid particles whose reactions a body system sums
   int threads = 0;
   std::vector<std::string> stages;  // the solver's stage names, for the metrics
   std::string density = "density", pressure = "pressure";  // the exported fields
@@ -44,6 +46,13 @@ struct WcsphSetup {
 struct IisphSetup {
   IisphSettings solve{};
   double stop_percentile = 0;
+};
+
+// DfsphSolver's solves and stopping test (Bender & Koschier 2015, 2017).
+struct DfsphSetup {
+  DfsphSettings solve{};
+  double stop_percentile = 0;
+  std::string density_stiffness, divergence_stiffness;  // its fields (warm starts)
 };
 
 // SphSolver's constants (Müller et al. 2003).

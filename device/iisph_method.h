@@ -11,13 +11,16 @@
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
 #include "device/fluid_setup.h"
+#include "device/method_stages.h"
 #include "device/stopping_error.h"
+#include "solvers/fluid/boundary_reactions.h"
+#include "solvers/fluid/fluid_stages.h"
 #include "solvers/iisph/iisph_solve.h"
 
 namespace upf::device {
 
 template <class Backend>
-class IisphMethod {
+class IisphMethod : public ThreeStageMethod {
   template <class T>
   using vector = typename Backend::template vector<T>;
 
@@ -41,6 +44,14 @@ class IisphMethod {
     return iisph_pressure_solve(
         exec, arrays(s), setup_.solve, s.dt,
         [&](const CompressionValue& value) { return stopping_(s.owned, value); });
+  }
+
+  // Reactions on bodies (IisphSolver's P_i = p_i / rho_i^2).
+  template <class Executor, class Step>
+  void add_reactions(const Executor& exec, const Step& s) const {
+    run_boundary_reactions(exec, s.n, s.f, s.fluid_of_boundary, s.density, s.owns,
+                           PressureOverDensitySquared{s.pressure, s.density, 1},
+                           CubicSplineGradient{s.f.kernel}, s.boundary_force);
   }
 
   std::size_t bytes() const {

@@ -1,32 +1,19 @@
 // The device pipeline instantiated on Thrust's OpenMP system (device_backend_omp.h).
 #include "device/backend_pipelines.h"
 #include "device/device_backend_omp.h"
-#include "device/fluid_pipeline.h"
-#include "device/iisph_method.h"
-#include "device/pcisph_method.h"
-#include "device/sph_method.h"
-#include "device/wcsph_method.h"
+#include "device/pipeline_factory.h"
 
 namespace upf::device {
 
-std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, PcisphSetup pcisph) {
-  return std::make_unique<FluidPipeline<OmpBackend, PcisphMethod<OmpBackend>>>(std::move(fluid),
-                                                                               std::move(pcisph));
+template <class Setup>
+std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, Setup method) {
+  return make_pipeline<OmpBackend>(std::move(fluid), std::move(method));
 }
 
-std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, IisphSetup iisph) {
-  return std::make_unique<FluidPipeline<OmpBackend, IisphMethod<OmpBackend>>>(std::move(fluid),
-                                                                              std::move(iisph));
-}
-
-std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, SphSetup sph) {
-  return std::make_unique<FluidPipeline<OmpBackend, SphMethod<OmpBackend>>>(std::move(fluid),
-                                                                            std::move(sph));
-}
-
-std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, WcsphSetup wcsph) {
-  return std::make_unique<FluidPipeline<OmpBackend, WcsphMethod<OmpBackend>>>(std::move(fluid),
-                                                                              std::move(wcsph));
-}
+template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, PcisphSetup);
+template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, IisphSetup);
+template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, DfsphSetup);
+template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, WcsphSetup);
+template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, SphSetup);
 
 }  // namespace upf::device

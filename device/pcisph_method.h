@@ -9,14 +9,16 @@
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
 #include "device/fluid_setup.h"
+#include "device/method_stages.h"
 #include "device/stopping_error.h"
+#include "solvers/fluid/boundary_reactions.h"
 #include "solvers/fluid/fluid_stages.h"
 #include "solvers/pcisph/pcisph_correction_loop.h"
 
 namespace upf::device {
 
 template <class Backend>
-class PcisphMethod {
+class PcisphMethod : public ThreeStageMethod {
   template <class T>
   using vector = typename Backend::template vector<T>;
 
@@ -52,6 +54,15 @@ class PcisphMethod {
     return pcisph_correction_loop(
         exec, arrays, setup_.loop, s.dt,
         [&](const CompressionValue& value) { return stopping_(s.owned, value); });
+  }
+
+  // Reactions on bodies from the final pressures (PcisphSolver's P_i = p_i / rho0_i^2).
+  template <class Executor, class Step>
+  void add_reactions(const Executor& exec, const Step& s) const {
+    run_boundary_reactions(
+        exec, s.n, s.f, s.fluid_of_boundary, s.density, s.owns,
+        PressureOverRestDensitySquared{s.pressure, s.f.rest_density, s.f.material},
+        CubicSplineGradient{s.f.kernel}, s.boundary_force);
   }
 
   std::size_t bytes() const { return stopping_.bytes(); }

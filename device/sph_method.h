@@ -7,13 +7,14 @@
 
 #include "device/device_particles.h"
 #include "device/fluid_setup.h"
+#include "device/method_stages.h"
 #include "device/state_equation_stats.h"
 #include "solvers/sph/sph_steps.h"
 
 namespace upf::device {
 
 template <class Backend>
-class SphMethod {
+class SphMethod : public ThreeStageMethod {
  public:
   using Setup = SphSetup;
   explicit SphMethod(SphSetup setup) : setup_(std::move(setup)) {}
@@ -31,6 +32,12 @@ class SphMethod {
     run_sph_pressure(exec, s.owned, s.f, setup_.kernels, setup_.stiffness, s.density, s.pressure,
                      s.pressure_acceleration);
     return state_equation_stats(exec, s);
+  }
+
+  template <class Executor, class Step>
+  void add_reactions(const Executor& exec, const Step& s) const {
+    run_sph_reactions(exec, s.n, s.f, s.fluid_of_boundary, setup_.kernels, s.density, s.pressure,
+                      s.owns, s.boundary_force);
   }
 
   std::size_t bytes() const { return 0; }

@@ -9,14 +9,16 @@
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
 #include "device/fluid_setup.h"
+#include "device/method_stages.h"
 #include "device/state_equation_stats.h"
+#include "solvers/fluid/boundary_reactions.h"
 #include "solvers/fluid/fluid_stages.h"
 #include "solvers/wcsph/wcsph_steps.h"
 
 namespace upf::device {
 
 template <class Backend>
-class WcsphMethod {
+class WcsphMethod : public ThreeStageMethod {
   template <class T>
   using vector = typename Backend::template vector<T>;
 
@@ -40,6 +42,14 @@ class WcsphMethod {
     run_wcsph_pressure(exec, s.owned, s.f, s.density, raw<Real>(tait_factor_), s.pressure,
                        s.fluid_gradient, s.boundary_gradient, s.pressure_acceleration);
     return state_equation_stats(exec, s);
+  }
+
+  // Reactions on bodies (EquationOfStateSolver's P_i = p_i / rho_i^2).
+  template <class Executor, class Step>
+  void add_reactions(const Executor& exec, const Step& s) const {
+    run_boundary_reactions(exec, s.n, s.f, s.fluid_of_boundary, s.density, s.owns,
+                           PressureOverDensitySquared{s.pressure, s.density, Real(1)},
+                           CubicSplineGradient{s.f.kernel}, s.boundary_force);
   }
 
   std::size_t bytes() const { return bytes_of(tait_factor_); }

@@ -89,7 +89,7 @@ Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame wri
   run->add_option("--device", run_args.device,
                   "where the steps run (default: the scene's \"device\", else cpu): cpu, omp (the "
                   "GPU pipeline on the CPU's threads, bitwise the same results) or cuda; PCISPH, "
-                  "IISPH, WCSPH or SPH with frozen walls so far");
+                  "IISPH, DFSPH, WCSPH or SPH with walls and bodies so far (no grains)");
   run->add_flag("--render", run_args.render,
                 "draw a PNG of every frame (and an MP4 with ffmpeg) into OUT/render when done");
   add_render_options(*run, run_args.render_args);

@@ -11,37 +11,21 @@
 // through the tangent plane of the nearest outer-layer sample, which carries the mesh's outward
 // normal (inner-layer samples carry none); samples are at most half a spacing apart, so the
 // plane is a good local stand-in for the mesh. Open meshes (static obstacles) have no inside and
-// are not guarded.
+// are not guarded. The per-particle work is SurfaceGuardStage (body_particle_stages.h), on the
+// CPU executor or, when the world steps on a device, there.
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
 
-#include "coupling/mesh/mesh_inside_test.h"
+#include "framework/core/mesh_parity.h"
+#include "framework/world/body_particle_stages.h"
 
 namespace upf {
 
 class World;
 
 inline constexpr const char* kBodyLocalNormalField = "body.local_normal";
-
-// A body's frame at the end of the step: x = origin + rotation r0, v = velocity + w x (x - origin).
-struct BodyFrame {
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
-};
-
-// Momentum a fluid particle gave a body by being stopped at its surface.
-struct SurfaceImpulse {
-  std::uint32_t particle = 0;  // the fluid particle's stable id
-  std::uint32_t body = 0;
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // where, world coordinates
-  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();  // N s, on the body
-};
 
 class PenetrationGuard {
  public:
@@ -53,22 +37,22 @@ class PenetrationGuard {
   // Asks the world for the fluid -> boundary neighbour list (shared with the fluid solvers).
   void request(World& world);
 
-  // Moves the fluid particles that are inside a body, given each body's end-of-step frame and
+  // Moves the fluid particles that are inside a body, given each body's end-of-step pose and
   // its mesh in the body frame (null: open, not guarded), and returns the impulses on the bodies
-  // in the order of the particles' stable ids (the same for any thread count and any order of
-  // the particles in memory).
-  const std::vector<SurfaceImpulse>& apply(World& world, const std::vector<BodyFrame>& frames,
-                                           const std::vector<const MeshInsideTest*>& meshes);
+  // in the order of the particles' stable ids (the same for any thread count, any order of the
+  // particles in memory, and on the device).
+  const std::vector<SurfaceHit>& apply(World& world, const std::vector<BodyPose>& poses,
+                                       const std::vector<const MeshParityData*>& meshes);
 
   // Fluid particles moved by the last apply().
-  std::size_t corrected() const { return impulses_.size(); }
+  std::size_t corrected() const { return hits_.size(); }
 
  private:
   double layer_depth_, clearance_;
   int list_ = -1;
-  std::vector<SurfaceImpulse> per_particle_;
+  std::vector<SurfaceHit> per_particle_;
   std::vector<std::uint8_t> hit_;
-  std::vector<SurfaceImpulse> impulses_;
+  std::vector<SurfaceHit> hits_;
 };
 
 }  // namespace upf

@@ -65,7 +65,7 @@ RigidBodySystem::RigidBodySystem(std::vector<Body> bodies, std::vector<StaticWal
       TriangleMesh local{b.local_vertices, s.mesh.triangles, s.mesh.source};
       b.inside = std::make_unique<MeshInsideTest>(std::move(local), spacing_);
     }
-    guarded_meshes_.push_back(b.inside.get());
+    guarded_meshes_.push_back(b.inside ? &b.inside->data() : nullptr);
     b.shape =
         make_body_shape(s.mesh, b.local_vertices, s.kind, s.mass ? s.mass->volume : 0.0, margin);
   }
@@ -136,27 +136,45 @@ void RigidBodySystem::prepare(World& world) {
   guard_.request(world);
 }
 
-BodyFrame RigidBodySystem::frame_of(const Body& body, double t) const {
-  BodyFrame f;
+namespace {
+
+Vec3d plain(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+BodyPose pose_of(const Eigen::Vector3d& origin, const Eigen::Matrix3d& rotation,
+                 const Eigen::Vector3d& velocity, const Eigen::Vector3d& angular_velocity) {
+  BodyPose f;
+  f.origin = plain(origin);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) f.rotation.m[3 * r + c] = rotation(r, c);
+  f.velocity = plain(velocity);
+  f.angular_velocity = plain(angular_velocity);
+  return f;
+}
+
+}  // namespace
+
+BodyPose RigidBodySystem::frame_of(const Body& body, double t) const {
+  BodyPose f;
   if (body.source.kind == BodyKind::Dynamic) {
     const btTransform& tr = body.rigid->getCenterOfMassTransform();
-    f.origin = from_bt(tr.getOrigin());
     const btQuaternion q = tr.getRotation();
-    f.rotation = Eigen::Quaterniond(double(q.w()), double(q.x()), double(q.y()), double(q.z()))
-                     .normalized()
-                     .toRotationMatrix();
-    f.velocity = from_bt(body.rigid->getLinearVelocity());
-    f.angular_velocity = from_bt(body.rigid->getAngularVelocity());
+    f = pose_of(from_bt(tr.getOrigin()),
+                Eigen::Quaterniond(double(q.w()), double(q.x()), double(q.y()), double(q.z()))
+                    .normalized()
+                    .toRotationMatrix(),
+                from_bt(body.rigid->getLinearVelocity()),
+                from_bt(body.rigid->getAngularVelocity()));
   } else if (body.motion) {
     const RigidPose pose = body.motion->pose(t);
     const RigidVelocity v = body.motion->velocity(t);
-    f.origin = body.origin0 + pose.position;
-    f.rotation = pose.orientation.toRotationMatrix();
-    f.velocity = v.linear;
-    f.angular_velocity = v.angular;
+    f = pose_of(body.origin0 + pose.position, pose.orientation.toRotationMatrix(), v.linear,
+                v.angular);
   } else {
-    f.origin = body.origin0;
+    f.origin = plain(body.origin0);
   }
+  f.moves = body.source.kind == BodyKind::Dynamic || (body.motion && body.motion->moves());
   return f;
 }
 
@@ -173,56 +191,45 @@ void RigidBodySystem::update_kinematic(double t, double dt) {
 
 void RigidBodySystem::place_particles(World& world, double dt) {
   const double t = world.time();
-  std::vector<BodyFrame> frames(bodies_.size());
-  std::vector<char> moves(bodies_.size(), 0);
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const Body& body = bodies_[b];
-    frames[b] = frame_of(body, t);
-    moves[b] = body.source.kind == BodyKind::Dynamic || (body.motion && body.motion->moves());
-  }
+  std::vector<BodyPose> poses(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) poses[b] = frame_of(bodies_[b], t);
   update_kinematic(t, dt);
 
+  if (DevicePipeline* device = world.device()) {
+    device->place_body_particles(poses, kBodyLocalPositionField);
+    return;
+  }
   Particles& p = world.particles();
-  const std::vector<Vec3>& local = *p.find_vector(kBodyLocalPositionField);
-  Vec3* x = p.position.data();
-  Vec3* v = p.velocity.data();
-  const BodyId* body = p.body.data();
-  world.executor().for_each_index(p.size(), [&](std::size_t i) {
-    const BodyId b = body[i];
-    if (b == kNoBody || !moves[std::size_t(b)]) return;
-    const BodyFrame& f = frames[std::size_t(b)];
-    const Eigen::Vector3d r = f.rotation * to_eigen(local[i]);
-    x[i] = to_vec3(f.origin + r);
-    v[i] = to_vec3(f.velocity + f.angular_velocity.cross(r));
-  });
+  world.executor().run(all_particles(p.size()),
+                       PlaceBodyParticlesStage{poses.data(), p.body.data(),
+                                               p.find_vector(kBodyLocalPositionField)->data(),
+                                               p.position.data(), p.velocity.data()});
 }
 
 void RigidBodySystem::advance(World& world, double dt) {
   // Fixed-point sums: the same bits whatever order the particles are in (they are reordered for
   // locality), so a body scene is identical for any thread count and any reordering.
-  std::vector<std::array<FixedPointAccumulator, 6>> sums(bodies_.size());
-  Particles& p = world.particles();
-  if (const std::vector<Vec3>* reaction = &world.coupling()[CouplingArray::BoundaryForce];
-      !reaction->empty()) {
-    std::vector<Eigen::Vector3d> origin(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b)
-      origin[b] = from_bt(bodies_[b].rigid->getCenterOfMassPosition());
+  std::vector<Vec3d> origins(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    origins[b] = plain(from_bt(bodies_[b].rigid->getCenterOfMassPosition()));
+  std::vector<BodyWrench> sums(bodies_.size());
+  if (DevicePipeline* device = world.device()) {
+    device->body_wrenches(origins, sums);
+  } else if (const std::vector<Vec3>& reaction = world.coupling()[CouplingArray::BoundaryForce];
+             !reaction.empty()) {
+    const Particles& p = world.particles();
+    const RigidReactionWrench wrench{p.position.data(), reaction.data(), p.body.data(),
+                                     origins.data()};
     for (std::size_t i = 0; i < p.size(); ++i) {
       const BodyId b = p.body[i];
       if (b == kNoBody || p.type[i] != ParticleType::Rigid) continue;
-      const Eigen::Vector3d f = to_eigen((*reaction)[i]);
-      const Eigen::Vector3d tau = (to_eigen(p.position[i]) - origin[std::size_t(b)]).cross(f);
-      std::array<FixedPointAccumulator, 6>& s = sums[std::size_t(b)];
-      for (int a = 0; a < 3; ++a) {
-        s[std::size_t(a)].add(f[a]);
-        s[std::size_t(a + 3)].add(tau[a]);
-      }
+      sums[std::size_t(b)] = BodyWrenchPlus{}(sums[std::size_t(b)], wrench(std::uint32_t(i)));
     }
   }
   std::vector<Eigen::Vector3d> force(bodies_.size()), torque(bodies_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    force[b] = {sums[b][0].value(), sums[b][1].value(), sums[b][2].value()};
-    torque[b] = {sums[b][3].value(), sums[b][4].value(), sums[b][5].value()};
+    force[b] = {sums[b].value(0), sums[b].value(1), sums[b].value(2)};
+    torque[b] = {sums[b].value(3), sums[b].value(4), sums[b].value(5)};
   }
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     Body& body = bodies_[b];
@@ -240,17 +247,19 @@ void RigidBodySystem::advance(World& world, double dt) {
 }
 
 std::vector<Eigen::Vector3d> RigidBodySystem::guard_surfaces(World& world, double t, double dt) {
-  std::vector<BodyFrame> frames(bodies_.size());
-  for (std::size_t b = 0; b < bodies_.size(); ++b) frames[b] = frame_of(bodies_[b], t);
+  std::vector<BodyPose> poses(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) poses[b] = frame_of(bodies_[b], t);
   std::vector<Eigen::Vector3d> mean_force(bodies_.size(), Eigen::Vector3d::Zero());
   // The impulses change the bodies' velocities now, after Bullet's step: the stopped fluid's
   // momentum goes to the body in the same step, in the order of the particles' stable ids.
-  for (const SurfaceImpulse& s : guard_.apply(world, frames, guarded_meshes_)) {
+  for (const SurfaceHit& s : guard_.apply(world, poses, guarded_meshes_)) {
     Body& body = bodies_[s.body];
-    mean_force[s.body] += s.impulse / dt;
+    const Eigen::Vector3d impulse(s.impulse.x, s.impulse.y, s.impulse.z);
+    const Eigen::Vector3d point(s.point.x, s.point.y, s.point.z);
+    mean_force[s.body] += impulse / dt;
     if (body.source.kind != BodyKind::Dynamic) continue;
-    body.rigid->applyImpulse(upf::to_bt(s.impulse),
-                             upf::to_bt(s.point - from_bt(body.rigid->getCenterOfMassPosition())));
+    body.rigid->applyImpulse(upf::to_bt(impulse),
+                             upf::to_bt(point - from_bt(body.rigid->getCenterOfMassPosition())));
   }
   return mean_force;
 }

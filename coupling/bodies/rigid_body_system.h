@@ -12,9 +12,11 @@
 // (compute_boundary_volumes, called once by World::prepare): a body's sampling does not change
 // as it moves past walls and other bodies.
 //
-// Per-body sums of forces and torques are fixed-point (FixedPointAccumulator), the penetration
-// guard's impulses reach the bodies in particle-id order, and Bullet steps on one thread: the
-// same bits for any thread count and whatever order the particles are in memory.
+// Per-body sums of forces and torques are fixed-point (BodyWrench), the penetration guard's
+// impulses reach the bodies in particle-id order, and Bullet steps on one thread: the same bits
+// for any thread count and whatever order the particles are in memory. The per-particle work
+// (placement, sums, guard) is body_particle_stages.h, run by the world's executor or, when the
+// world steps on a device, by the device pipeline: the bodies stay here, the particles there.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -27,6 +29,7 @@
 #include "coupling/bodies/bullet_world.h"
 #include "coupling/bodies/collision_shapes.h"
 #include "coupling/bodies/penetration_guard.h"
+#include "coupling/mesh/mesh_inside_test.h"
 #include "coupling/motion/prescribed_motion.h"
 #include "framework/scene/scene.h"
 #include "framework/world/body_system.h"
@@ -91,7 +94,7 @@ class RigidBodySystem : public BodySystem {
   void read_states();
   void update_kinematic(double t, double dt);
   // Where body b stands at time t (a dynamic body: where Bullet has it now).
-  BodyFrame frame_of(const Body& body, double t) const;
+  BodyPose frame_of(const Body& body, double t) const;
   // Stops fluid particles at the bodies' surfaces; returns the impulses' mean force per body.
   std::vector<Eigen::Vector3d> guard_surfaces(World& world, double t, double dt);
 
@@ -101,7 +104,7 @@ class RigidBodySystem : public BodySystem {
   Eigen::Vector3d gravity_;
   std::unique_ptr<BulletWorld> bullet_;
   PenetrationGuard guard_;
-  std::vector<const MeshInsideTest*> guarded_meshes_;  // per body; null: not guarded
+  std::vector<const MeshParityData*> guarded_meshes_;  // per body; null: not guarded
   double time_ = 0;
 };
 

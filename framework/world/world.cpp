@@ -209,14 +209,26 @@ std::size_t World::count(ParticleType type) const {
 
 void World::step_on_device(double dt) {
   Stopwatch total;
-  if (device_stale_) {
+  // A host edit (particles()) since the last step goes up first. Body systems do their particle
+  // work through the device (device()); one that edits particles() instead is still right, only
+  // slower: it downloads, and its edit goes up again here.
+  auto upload_if_stale = [&] {
+    if (!device_stale_) return;
     device_->upload(particles_);
     device_stale_ = false;
-  }
+  };
+  upload_if_stale();
+  host_stale_ = true;
+  device_->save_last_good();
+  for (auto& b : bodies_) b->place_particles(*this, dt);
+  upload_if_stale();
   report_ = StepReport{};
   report_.dt = dt;
-  host_stale_ = true;
   device_->step(step_count_, dt, report_);
+  Stopwatch body_watch;
+  for (auto& b : bodies_) b->advance(*this, dt);
+  if (!bodies_.empty()) report_.stage_ms.emplace_back("bodies", body_watch.elapsed_ms());
+  upload_if_stale();
   time_ += dt;
   ++step_count_;
   report_.total_ms = total.elapsed_ms();

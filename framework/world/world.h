@@ -76,6 +76,8 @@ class World {
   // kept: the pipeline's solvers use its own.
   void set_device(std::unique_ptr<DevicePipeline> pipeline);
   const DevicePipeline* device() const { return device_.get(); }
+  // For body systems while the device steps: their per-particle work goes through it.
+  DevicePipeline* device() { return device_.get(); }
   // max |v|^2 over liquid particles, wherever they are (the solvers' CFL limits).
   Real max_liquid_speed_squared() const;
   // The metrics' kinetic energy (kinetic_energy.h) and particle counts, wherever the particles are.

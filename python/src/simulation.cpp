@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "device/device_pipelines.h"
 #include "framework/core/errors.h"
 #include "framework/output/liquid_surface.h"
 #include "framework/scene/scene_builder.h"
@@ -11,11 +12,14 @@
 namespace upf::python {
 
 Simulation::Simulation(SceneDescription scene, std::shared_ptr<const Registry> registry,
-                       int threads, std::string scene_text)
+                       int threads, std::string scene_text, std::string device_where)
     : scene_(std::move(scene)),
       registry_(std::move(registry)),
       scene_text_(std::move(scene_text)),
-      world_(build_world(scene_, *registry_, threads)) {}
+      device_where_(std::move(device_where)),
+      world_(build_world(scene_, *registry_, threads)) {
+  if (scene_.device != "cpu") check_device(scene_.device, *world_, device_where_);
+}
 
 World& Simulation::world() {
   if (!prepared_) {
@@ -25,6 +29,9 @@ World& Simulation::world() {
     ++generation_;
     try {
       world_->prepare();
+      // Python forces added since the check may take the scene out of the device's reach: the
+      // pipeline says so here, before the first step.
+      world_->set_device(make_device_pipeline(scene_.device, *world_, device_where_));
     } catch (const std::exception& e) {
       failure_ = e.what();
       throw;

@@ -21,9 +21,11 @@ namespace upf::python {
 class Simulation {
  public:
   // Builds the world (particles, solvers, bodies); it is prepared on first use, so that forces
-  // can still be added (add_solver).
+  // can still be added (add_solver), and then steps on the scene's device (`device_where` names
+  // where the device was chosen, for errors). A device that does not exist or cannot run the
+  // scene is an InputError here.
   Simulation(SceneDescription scene, std::shared_ptr<const Registry> registry, int threads,
-             std::string scene_text);
+             std::string scene_text, std::string device_where);
 
   const SceneDescription& scene() const { return scene_; }
   // The prepared world.
@@ -59,6 +61,7 @@ class Simulation {
   SceneDescription scene_;
   std::shared_ptr<const Registry> registry_;
   std::string scene_text_;
+  std::string device_where_;
   std::unique_ptr<World> world_;
   bool prepared_ = false;
   std::uint64_t generation_ = 0;

@@ -45,11 +45,18 @@ std::string read_text(const std::filesystem::path& path) {
 // every liquid material's solver (upf run --solver).
 std::unique_ptr<Simulation> make_simulation(SceneDescription scene, std::string text,
                                             const RegistryHandle& registry, int threads,
-                                            const std::string& solver) {
+                                            const std::string& solver, const std::string& device,
+                                            const std::string& source) {
   if (threads < 0) throw InputError("threads", "must be 0 (OpenMP's default) or more");
   if (!solver.empty()) scene = with_solver(scene, *registry.registry, solver);
-  return std::make_unique<Simulation>(std::move(scene), registry.registry, threads,
-                                      std::move(text));
+  // The argument overrides the scene's key, as `upf run --device` does.
+  std::string where = source + ":/device";
+  if (!device.empty()) {
+    scene.device = device;
+    where = "device";
+  }
+  return std::make_unique<Simulation>(std::move(scene), registry.registry, threads, std::move(text),
+                                      std::move(where));
 }
 
 py::dict body_dict(const NamedBodyState& b) {
@@ -95,24 +102,28 @@ void bind_simulation(py::module_& m) {
       .def_static(
           "from_file",
           [](const std::filesystem::path& path, int threads, const std::string& solver,
-             const RegistryHandle& registry) {
+             const RegistryHandle& registry, const std::string& device) {
             // load_scene_file names the file in every error, a missing one included.
             SceneDescription scene = load_scene_file(path, *registry.registry);
-            return make_simulation(std::move(scene), read_text(path), registry, threads, solver);
+            return make_simulation(std::move(scene), read_text(path), registry, threads, solver,
+                                   device, path.string());
           },
-          py::arg("path"), py::arg("threads"), py::arg("solver"), py::arg("registry"))
+          py::arg("path"), py::arg("threads"), py::arg("solver"), py::arg("registry"),
+          py::arg("device"))
       .def_static(
           "from_text",
           [](const std::string& text, const std::string& source, int threads,
-             const std::string& solver, const RegistryHandle& registry) {
+             const std::string& solver, const RegistryHandle& registry, const std::string& device) {
             const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
             if (document.is_discarded())
               throw InputError(source, "not valid JSON (NaN and infinities have no JSON form)");
             SceneDescription scene = read_scene(document, *registry.registry, source);
-            return make_simulation(std::move(scene), text, registry, threads, solver);
+            return make_simulation(std::move(scene), text, registry, threads, solver, device,
+                                   source);
           },
           py::arg("text"), py::arg("source"), py::arg("threads"), py::arg("solver"),
-          py::arg("registry"))
+          py::arg("registry"), py::arg("device"))
+      .def_property_readonly("device", [](const Simulation& s) { return s.scene().device; })
       .def_property_readonly("name", [](const Simulation& s) { return s.scene().name; })
       .def_property_readonly("time", &Simulation::time)
       .def_property_readonly("step_count", &Simulation::step_count)

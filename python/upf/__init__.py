@@ -49,30 +49,40 @@ class Simulation:
         self._registry = registry
 
     @classmethod
-    def from_file(cls, path, threads=0, solver=None, registry=None):
+    def from_file(cls, path, threads=0, solver=None, registry=None, device=None):
         """Loads a scene file; a bad scene raises SceneError naming the file and JSON paths.
 
         threads: OpenMP threads (0: OpenMP's default). solver: every liquid material's solver
         replaced by this one (as `upf run --solver`). registry: a Registry with Python solvers.
+        device: where the steps run, "cpu", "omp" or "cuda" (as `upf run --device`; default:
+        the scene's "device" key, else "cpu"); one that cannot run the scene raises SceneError.
         """
         registry = registry or Registry()
-        return cls(_upf.Simulation.from_file(os.fspath(path), threads, solver or "", registry),
+        return cls(_upf.Simulation.from_file(os.fspath(path), threads, solver or "", registry,
+                                             device or ""),
                    registry)
 
     @classmethod
-    def from_dict(cls, scene, threads=0, solver=None, registry=None, source="<dict>"):
+    def from_dict(cls, scene, threads=0, solver=None, registry=None, source="<dict>",
+                  device=None):
         """Loads a scene given as a dict (the JSON of a scene file); errors name `source`."""
         registry = registry or Registry()
         try:
             text = json.dumps(scene, allow_nan=False)
         except (TypeError, ValueError) as e:
             raise SceneError(f"{source}: {e}", [(source, str(e))]) from None
-        return cls(_upf.Simulation.from_text(text, source, threads, solver or "", registry),
+        return cls(_upf.Simulation.from_text(text, source, threads, solver or "", registry,
+                                             device or ""),
                    registry)
 
     @property
     def name(self):
         return self._core.name
+
+    @property
+    def device(self):
+        """Where the steps run: "cpu", "omp" or "cuda"."""
+        return self._core.device
 
     @property
     def time(self):

@@ -4,17 +4,11 @@
 
 #include "framework/world/world.h"
 #include "solvers/dfsph/dfsph_kernels.h"
+#include "solvers/dfsph/dfsph_steps.h"
 #include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_time_step.h"
 
 namespace upf {
-
-namespace {
-// The divergence-free solver leaves particles with fewer neighbours alone (SPlisHSPlasH's
-// DFSPH does the same in 3D): near the free surface the rate of change of the density is that
-// of a particle losing neighbours, not a compression.
-constexpr std::uint32_t kMinDivergenceNeighbours = 20;
-}  // namespace
 
 ParamBinding<DfsphParams> DfsphSolver::param_binding() {
   ParamBinding<DfsphParams> b;
@@ -55,8 +49,8 @@ DfsphSolver::DfsphSolver(const DfsphParams& params, std::vector<MaterialId> mate
 void DfsphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
   Particles& p = world.particles();
-  density_stiffness_ = p.declare_scalar("dfsph.density_stiffness");
-  divergence_stiffness_ = p.declare_scalar("dfsph.divergence_stiffness");
+  density_stiffness_ = p.declare_scalar(kDensityStiffness);
+  divergence_stiffness_ = p.declare_scalar(kDivergenceStiffness);
   reference_speed_ = free_fall_speed(world);
 }
 
@@ -68,59 +62,35 @@ std::vector<std::string> DfsphSolver::stages() const {
   return {"non_pressure", "divergence", "pressure", "integration"};
 }
 
-std::pair<int, double> DfsphSolver::correct(World& world, const FluidView& f, const Real* density,
-                                            Real dt, const Solve& solve) {
-  const CpuExecutor& exec = world.executor();
+DfsphArrays DfsphSolver::arrays(World& world, const FluidView& f, const Real* density) {
   Particles& p = world.particles();
-  const ParticleRange owned = fluid_.owned.range();
-  Real* stiffness = p[solve.stiffness].data();
-  const Real dt_power = solve.divergence ? dt : dt * dt;
-  const DfsphVelocityStage update{f,
-                                  fluid_.fluid_gradient.data(),
-                                  fluid_.boundary_gradient.data(),
-                                  k_.data(),
-                                  dt,
-                                  v_star_.data()};
-  const DfsphStiffnessStage measure{f,
-                                    fluid_.fluid_gradient.data(),
-                                    fluid_.boundary_gradient.data(),
-                                    boundary_divergence_.data(),
-                                    density,
-                                    factor_.data(),
-                                    v_star_.data(),
-                                    dt,
-                                    Real(params_.omega),
-                                    solve.divergence,
-                                    kMinDivergenceNeighbours,
-                                    rho_adv_.data(),
-                                    k_.data()};
-  const DfsphAccumulateStage accumulate{k_.data(), dt_power, k_total_.data(), stiffness};
-  if (params_.warm_start) {
-    exec.run(owned, measure);
-    exec.run(owned, DfsphWarmStartStage{f, rho_adv_.data(), dt_power, stiffness, k_.data(),
-                                        k_total_.data()});
-    exec.run(owned, update);
-  } else {
-    exec.run(owned, ClearStiffnessStage{stiffness});
-  }
-  exec.run(owned, measure);
-  // An exact stopping error (a fixed-point sum for the average): the same iteration count for
-  // any thread count. The divergence-free solver bounds the average, as the paper does.
-  auto stopping_error = [&] {
-    return solve.divergence ? average_compression(exec, fluid_.owned, f, rho_adv_.data())
-                            : stopping_(exec, fluid_.owned, f, rho_adv_.data());
-  };
-  double error = stopping_error();
-  int iteration = 0;
-  while (iteration < solve.max_iterations &&
-         (iteration < solve.min_iterations || error > solve.eta)) {
-    exec.run(owned, accumulate);
-    exec.run(owned, update);
-    exec.run(owned, measure);
-    error = stopping_error();
-    ++iteration;
-  }
-  return {iteration, error};
+  return {f,
+          fluid_.owned.range(),
+          p.size(),
+          fluid_.fluid_gradient.data(),
+          fluid_.boundary_gradient.data(),
+          fluid_.other_acceleration.data(),
+          density,
+          p[density_stiffness_].data(),
+          p[divergence_stiffness_].data(),
+          factor_.data(),
+          boundary_divergence_.data(),
+          rho_adv_.data(),
+          k_.data(),
+          k_total_.data(),
+          v_star_.data()};
+}
+
+DfsphSettings DfsphSolver::settings() const {
+  return {params_.eta,
+          params_.eta_divergence,
+          params_.min_iterations,
+          params_.max_iterations,
+          params_.max_divergence_iterations,
+          params_.divergence,
+          params_.warm_start,
+          params_.omega,
+          stopping_.is_average()};
 }
 
 void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
@@ -129,55 +99,38 @@ void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
   const std::size_t n = p.size();
   FluidView f;
   Real* density = nullptr;
+  DfsphArrays a{};
   stats_ = SolverStats{};
+  const DfsphSettings s = settings();
+  auto stopping_error = [&](const CompressionValue&) {
+    return stopping_(exec, fluid_.owned, f, rho_adv_.data());
+  };
 
   run("non_pressure", [&] {
     f = fluid_.begin_step(world);
     density = p[fluid_.density_field].data();
     fluid_.shared_forces(world, f, density);
-    factor_.resize(n);
-    boundary_divergence_.resize(n);
-    rho_adv_.resize(n);
+    for (auto* v : {&factor_, &boundary_divergence_, &rho_adv_, &k_, &k_total_}) v->resize(n);
     v_star_.resize(n);
-    k_.assign(n, Real(0));
-    k_total_.assign(n, Real(0));
-    exec.run(fluid_.owned.range(),
-             InverseDiagonalStage{f, fluid_.fluid_gradient.data(), fluid_.boundary_gradient.data(),
-                                  factor_.data()});
-    exec.run(fluid_.owned.range(), BoundaryVelocityDivergenceStage{f, boundary_divergence_.data()});
-    exec.run(all_particles(n), CopyVelocityStage{p.velocity.data(), v_star_.data()});
+    a = arrays(world, f, density);
+    run_dfsph_non_pressure(exec, a);
   });
 
   run("divergence", [&] {
     divergence_iterations_ = 0;
     divergence_error_ = 0;
     if (!params_.divergence) return;
-    const auto [iterations, error] =
-        correct(world, f, density, dt,
-                {true, params_.eta_divergence, 1, params_.max_divergence_iterations,
-                 divergence_stiffness_});
+    const auto [iterations, error] = dfsph_correct(exec, a, s, dt, true, stopping_error);
     divergence_iterations_ = iterations;
     divergence_error_ = error;
   });
 
-  run("pressure", [&] {
-    exec.run(fluid_.owned.range(),
-             VelocityKickStage{fluid_.other_acceleration.data(), dt, v_star_.data()});
-    const auto [iterations, error] = correct(
-        world, f, density, dt,
-        {false, params_.eta, params_.min_iterations, params_.max_iterations, density_stiffness_});
-    stats_.iterations = iterations;
-    stats_.avg_density_error = stopping_.is_average()
-                                   ? error
-                                   : average_compression(exec, fluid_.owned, f, rho_adv_.data());
-    stats_.max_density_error = max_compression(exec, fluid_.owned, f, rho_adv_.data());
-  });
+  run("pressure", [&] { stats_ = dfsph_pressure_solve(exec, a, s, dt, stopping_error); });
 
   run("integration", [&] {
     fluid_.add_reactions(world, f, density, TotalStiffness{k_total_.data()});
-    exec.run(fluid_.owned.range(),
-             DfsphIntegrateStage{v_star_.data(), k_total_.data(), density, dt, p.velocity.data(),
-                                 p.position.data(), p[fluid_.pressure_field].data()});
+    run_dfsph_integration(exec, a, dt, p.velocity.data(), p.position.data(),
+                          p[fluid_.pressure_field].data());
   });
 }
 

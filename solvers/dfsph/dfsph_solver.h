@@ -32,6 +32,7 @@
 
 #include "framework/params/param_binding.h"
 #include "framework/solver/solver.h"
+#include "solvers/dfsph/dfsph_steps.h"
 #include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_solver_state.h"
 
@@ -60,21 +61,20 @@ class DfsphSolver final : public Solver {
   SolverStats stats() const override { return stats_; }
 
   static ParamBinding<DfsphParams> param_binding();
+  // The warm starts' fields: K / dt^2 and K / dt of the last step.
+  static constexpr const char* kDensityStiffness = "dfsph.density_stiffness";
+  static constexpr const char* kDivergenceStiffness = "dfsph.divergence_stiffness";
+  // The solves' settings, for the device pipeline too.
+  DfsphSettings settings() const;
+  const FluidSolverState& fluid_state() const { return fluid_; }
+  double stop_percentile() const { return stopping_.percentile(); }
   // The divergence-free solver's last step: iterations and average density change per step.
   int divergence_iterations() const { return divergence_iterations_; }
   double divergence_error() const { return divergence_error_; }
 
  private:
-  struct Solve {
-    bool divergence;
-    double eta;
-    int min_iterations, max_iterations;
-    FieldHandle<Real> stiffness;
-  };
-  // Corrects v_star_ until the solve's error is below its eta; returns {iterations, error}.
-  std::pair<int, double> correct(World& world, const FluidView& f, const Real* density, Real dt,
-                                 const Solve& solve);
-
+  // The shared step's views (dfsph_steps.h) of this step's arrays.
+  DfsphArrays arrays(World& world, const FluidView& f, const Real* density);
   DfsphParams params_;
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;

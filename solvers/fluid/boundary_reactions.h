@@ -13,6 +13,9 @@
 // count. The pairs cancel exactly up to rounding, so fluid and bodies together conserve momentum.
 #pragma once
 
+#include <cstddef>
+
+#include "framework/executors/particle_range.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
 
@@ -65,5 +68,17 @@ struct CubicSplineGradient {
   CubicSplineKernel kernel;
   UPF_HD Vec3 operator()(const Vec3& r) const { return kernel.gradient(r); }
 };
+
+// The stage over all n particles (only rigid ones have entries in `fluid_of_boundary`), on any
+// executor: the CPU's (FluidSolverState::add_reactions) or a device pipeline's.
+template <class Executor, class PressureFactor, class PressureGradient>
+void run_boundary_reactions(const Executor& exec, std::size_t n, const FluidView& f,
+                            NeighbourView fluid_of_boundary, const Real* density,
+                            OwnedMaterials owns, const PressureFactor& pressure_factor,
+                            const PressureGradient& pressure_gradient, Vec3* force) {
+  exec.run(all_particles(n),
+           BoundaryReactionStage<PressureFactor, PressureGradient>{
+               f, fluid_of_boundary, density, owns, pressure_factor, pressure_gradient, force});
+}
 
 }  // namespace upf

@@ -57,10 +57,9 @@ struct FluidSolverState {
                      const PressureGradient& pressure_gradient) const {
     if (reaction_list < 0) return;
     std::vector<Vec3>& force = world.coupling()[CouplingArray::BoundaryForce];
-    world.executor().run(all_particles(force.size()),
-                         BoundaryReactionStage<PressureFactor, PressureGradient>{
-                             f, view_of(world.neighbours(reaction_list)), density,
-                             owned.materials(), pressure_factor, pressure_gradient, force.data()});
+    run_boundary_reactions(world.executor(), force.size(), f,
+                           view_of(world.neighbours(reaction_list)), density, owned.materials(),
+                           pressure_factor, pressure_gradient, force.data());
   }
   template <class PressureFactor>
   void add_reactions(World& world, const FluidView& f, const Real* density,

@@ -87,14 +87,13 @@ void SphSolver::compute_pressure(const World& world, const FluidView& f, const R
 
 void SphSolver::add_reactions(World& world, const FluidView& f, const Real* density,
                               const Real* pressure) const {
-  // The boundary term of sph_pressure_acceleration: P_i = p_i / (2 rho_i^2), with the pressure
-  // kernel of the set in use.
-  kernel_choice(world.settings().support_radius()).with_kernels([&](const auto& kernels, Real) {
-    using Kernels = std::decay_t<decltype(kernels)>;
-    fluid().add_reactions(world, f, density,
-                          PressureOverDensitySquared{pressure, density, Real(0.5)},
-                          KernelSetPressureGradient<Kernels>{kernels});
-  });
+  const FluidSolverState& state = fluid();
+  if (state.reaction_list < 0) return;
+  std::vector<Vec3>& force = world.coupling()[CouplingArray::BoundaryForce];
+  run_sph_reactions(world.executor(), force.size(), f,
+                    view_of(world.neighbours(state.reaction_list)),
+                    kernel_choice(world.settings().support_radius()), density, pressure,
+                    state.owned.materials(), force.data());
 }
 
 }  // namespace upf

@@ -6,6 +6,8 @@
 #include <type_traits>
 
 #include "framework/executors/particle_range.h"
+#include "solvers/fluid/boundary_reactions.h"
+#include "solvers/fluid/fluid_stages.h"
 #include "solvers/sph/sph_kernel_sets.h"
 #include "solvers/sph/sph_kernels.h"
 
@@ -53,6 +55,21 @@ void run_sph_pressure(const Executor& exec, ParticleRange owned, const FluidView
     using Kernels = std::decay_t<decltype(kernels)>;
     exec.run(owned,
              SphPressureAccelerationStage<Kernels>{f, kernels, density, pressure, a_pressure});
+  });
+}
+
+// The reactions on rigid particles (boundary_reactions.h) of sph_pressure_acceleration's boundary
+// term: P_i = p_i / (2 rho_i^2), with the pressure kernel of the set in use.
+template <class Executor>
+void run_sph_reactions(const Executor& exec, std::size_t n, const FluidView& f,
+                       NeighbourView fluid_of_boundary, const SphKernelChoice& choice,
+                       const Real* density, const Real* pressure, OwnedMaterials owns,
+                       Vec3* force) {
+  choice.with_kernels([&](const auto& kernels, Real) {
+    using Kernels = std::decay_t<decltype(kernels)>;
+    run_boundary_reactions(exec, n, f, fluid_of_boundary, density, owns,
+                           PressureOverDensitySquared{pressure, density, Real(0.5)},
+                           KernelSetPressureGradient<Kernels>{kernels}, force);
   });
 }
 

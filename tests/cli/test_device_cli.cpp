@@ -65,8 +65,11 @@ TEST_F(DeviceCli, TheScenesDeviceKeyIsUsedAndCheckedUnlessTheOptionOverridesIt) 
   EXPECT_NE(validated.output.find("bad.json:/device"), std::string::npos) << validated.output;
   EXPECT_NE(validated.output.find("allowed: cpu"), std::string::npos) << validated.output;
   doc["device"] = "omp";
-  doc["materials"]["water"]["solver"] = {{"name", "dfsph"}};
-  const Result uncovered = run_upf("validate " + write(doc, "dfsph.json"));
+  // Grains are not on the device yet.
+  doc["materials"]["sand"] = {{"type", "granular"}, {"density", 2600}, {"solver", "dem_linear"}};
+  doc["granular_blocks"] = {
+      {{"material", "sand"}, {"min", {1.0, 0.0, 0.1}}, {"max", {1.2, 0.2, 0.3}}}};
+  const Result uncovered = run_upf("validate " + write(doc, "grains.json"));
   EXPECT_EQ(uncovered.code, 2) << uncovered.output;
   EXPECT_NE(uncovered.output.find("--device cpu"), std::string::npos) << uncovered.output;
   const Result refused = run_upf("run " + bad + " -q --end 0.05 --out " + (dir_ / "bad").string());

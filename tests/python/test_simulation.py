@@ -267,3 +267,32 @@ def test_ctrl_c_ends_a_long_advance_between_steps():
     steps = sim.step_count
     sim.step()  # the world is whole: it goes on
     assert sim.step_count == steps + 1
+
+
+def test_the_device_pipeline_steps_the_cpus_bits(source_dir):
+    # --device omp (the GPU pipeline on the CPU's threads) is bitwise the CPU path
+    # (docs/device.md): particles and the crate, here dropped into the pool within 0.1 s.
+    scene = crate_scene(source_dir)
+    scene["bodies"][0]["mesh"]["position"] = [0.3, 0.17, 0.15]
+    try:
+        omp = upf.Simulation.from_dict(scene, threads=2, device="omp")
+    except upf.SceneError as e:
+        pytest.skip(f"no device pipeline in this build: {e}")
+    cpu = upf.Simulation.from_dict(scene, threads=2)
+    assert (omp.device, cpu.device) == ("omp", "cpu")
+    omp.advance_to(0.1)
+    cpu.advance_to(0.1)
+    assert omp.step_count == cpu.step_count
+    for name in ("position", "velocity", "density", "pressure"):
+        assert np.array_equal(omp.copy(name), cpu.copy(name)), name
+    assert omp.bodies() == cpu.bodies()
+    assert cpu.bodies()[0]["fluid_force"][1] > 0  # the crate reached the water
+
+
+def test_a_device_that_cannot_run_the_scene_is_a_scene_error(source_dir):
+    with pytest.raises(upf.SceneError, match="device"):
+        upf.Simulation.from_dict(crate_scene(source_dir), device="gpu0")
+    scene = crate_scene(source_dir)
+    scene["device"] = "gpu0"
+    with pytest.raises(upf.SceneError, match="<dict>:/device"):
+        upf.Simulation.from_dict(scene)

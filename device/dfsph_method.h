@@ -1,0 +1,108 @@
+// DFSPH's stages (Bender & Koschier 2015, 2017) in the device pipeline (fluid_pipeline.h): the
+// shared step of dfsph_steps.h with the stopping error computed on the device (stopping_error.h).
+// It has a fourth stage, "divergence", and its own integration (v = v*, x += dt v): the pipeline
+// asks for both through kDivergenceStage and kOwnIntegration.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+
+#include "device/device_particles.h"
+#include "device/device_primitives.h"
+#include "device/fluid_setup.h"
+#include "device/stopping_error.h"
+#include "solvers/dfsph/dfsph_steps.h"
+#include "solvers/fluid/boundary_reactions.h"
+
+namespace upf::device {
+
+template <class Backend>
+class DfsphMethod {
+  template <class T>
+  using vector = typename Backend::template vector<T>;
+
+ public:
+  using Setup = DfsphSetup;
+  static constexpr bool kDivergenceStage = true;
+  static constexpr bool kOwnIntegration = true;
+
+  explicit DfsphMethod(DfsphSetup setup)
+      : setup_(std::move(setup)), stopping_(setup_.stop_percentile) {}
+
+  void bind(DeviceParticles<Backend>& p) {
+    density_stiffness_ = &p.scalar_array(setup_.density_stiffness);
+    divergence_stiffness_ = &p.scalar_array(setup_.divergence_stiffness);
+  }
+
+  template <class Executor, class Step>
+  void non_pressure(const Executor& exec, const Step& s) {
+    for (auto* a : {&factor_, &boundary_divergence_, &rho_adv_, &k_, &k_total_}) a->resize(s.n);
+    v_star_.resize(s.n);
+    run_dfsph_non_pressure(exec, arrays(s));
+  }
+
+  template <class Executor, class Step>
+  void divergence(const Executor& exec, const Step& s) {
+    if (!setup_.solve.divergence) return;
+    dfsph_correct(exec, arrays(s), setup_.solve, s.dt, true, stopping_error(s));
+  }
+
+  template <class Executor, class Step>
+  SolverStats pressure(const Executor& exec, const Step& s) {
+    return dfsph_pressure_solve(exec, arrays(s), setup_.solve, s.dt, stopping_error(s));
+  }
+
+  // Reactions on bodies from the step's total K (DfsphSolver's P_i).
+  template <class Executor, class Step>
+  void add_reactions(const Executor& exec, const Step& s) const {
+    run_boundary_reactions(exec, s.n, s.f, s.fluid_of_boundary, s.density, s.owns,
+                           TotalStiffness{raw<Real>(k_total_)}, CubicSplineGradient{s.f.kernel},
+                           s.boundary_force);
+  }
+
+  template <class Executor, class Step>
+  void integrate(const Executor& exec, const Step& s, Vec3* velocity, Vec3* position) {
+    run_dfsph_integration(exec, arrays(s), s.dt, velocity, position, s.pressure);
+  }
+
+  std::size_t bytes() const {
+    return bytes_of(factor_) + bytes_of(boundary_divergence_) + bytes_of(rho_adv_) + bytes_of(k_) +
+           bytes_of(k_total_) + bytes_of(v_star_) + stopping_.bytes();
+  }
+
+ private:
+  template <class Step>
+  auto stopping_error(const Step& s) {
+    return
+        [this, owned = s.owned](const CompressionValue& value) { return stopping_(owned, value); };
+  }
+
+  template <class Step>
+  DfsphArrays arrays(const Step& s) {
+    return {s.f,
+            s.owned,
+            s.n,
+            s.fluid_gradient,
+            s.boundary_gradient,
+            s.other_acceleration,
+            s.density,
+            raw<Real>(*density_stiffness_),
+            raw<Real>(*divergence_stiffness_),
+            raw<Real>(factor_),
+            raw<Real>(boundary_divergence_),
+            raw<Real>(rho_adv_),
+            raw<Real>(k_),
+            raw<Real>(k_total_),
+            raw<Vec3>(v_star_)};
+  }
+
+  DfsphSetup setup_;
+  DeviceStoppingError<Backend> stopping_;
+  vector<Real> factor_, boundary_divergence_, rho_adv_, k_, k_total_;
+  vector<Vec3> v_star_;
+  vector<Real>* density_stiffness_ = nullptr;
+  vector<Real>* divergence_stiffness_ = nullptr;
+};
+
+}  // namespace upf::device

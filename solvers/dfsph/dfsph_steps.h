@@ -1,0 +1,150 @@
+// DFSPH's step (Bender & Koschier 2015, 2017; dfsph_solver.h) after the shared forces, written
+// once for every executor: DfsphSolver runs it on the CPU executor, the device pipeline on its
+// backends (device/). Plain views and an executor with run / fixed_point_sum / max_of, so the
+// same statements give the same bits wherever they run. C++17: nvcc builds it too.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+#include "framework/executors/particle_range.h"
+#include "framework/solver/solver.h"
+#include "solvers/dfsph/dfsph_kernels.h"
+#include "solvers/fluid/density_rate.h"
+#include "solvers/fluid/fluid_stages.h"
+
+namespace upf {
+
+struct DfsphArrays {
+  FluidView f;
+  ParticleRange owned;
+  std::size_t n;  // all particles
+  const Vec3* fluid_gradient;
+  const Vec3* boundary_gradient;
+  const Vec3* other_acceleration;
+  const Real* density;
+  Real* density_stiffness;     // the fields: last step's K / dt^2 in, this step's out
+  Real* divergence_stiffness;  // K / dt, likewise
+  // Per-step work arrays over all particles.
+  Real* factor;
+  Real* boundary_divergence;
+  Real* rho_adv;
+  Real* k;
+  Real* k_total;
+  Vec3* v_star;
+};
+
+struct DfsphSettings {
+  double eta, eta_divergence;
+  int min_iterations, max_iterations, max_divergence_iterations;
+  bool divergence, warm_start;
+  double omega;
+  bool stops_on_average;  // the constant-density solver's stopping error is the average
+};
+
+// The divergence-free solver leaves particles with fewer neighbours alone (SPlisHSPlasH's
+// DFSPH does the same in 3D): near the free surface the rate of change of the density is that
+// of a particle losing neighbours, not a compression.
+inline constexpr std::uint32_t kDfsphMinDivergenceNeighbours = 20;
+
+struct ClearDfsphStiffnessStage {
+  Real* k;
+  Real* k_total;
+  UPF_HD void operator()(std::uint32_t i) const {
+    k[i] = 0;
+    k_total[i] = 0;
+  }
+};
+
+// The "non_pressure" part after the shared forces: the factors 1/D_i, the boundary particles'
+// velocity divergence, v* = v.
+template <class Executor>
+void run_dfsph_non_pressure(const Executor& exec, const DfsphArrays& a) {
+  exec.run(all_particles(a.n), ClearDfsphStiffnessStage{a.k, a.k_total});
+  exec.run(a.owned, InverseDiagonalStage{a.f, a.fluid_gradient, a.boundary_gradient, a.factor});
+  exec.run(a.owned, BoundaryVelocityDivergenceStage{a.f, a.boundary_divergence});
+  exec.run(all_particles(a.n), CopyVelocityStage{a.f.v, a.v_star});
+}
+
+// Corrects v* until the solve's error is below eta (the divergence-free solve when `divergence`,
+// else the constant-density one); the error is stopping_error(value) over rho_adv's
+// CompressionValue. Returns {iterations, error}.
+template <class Executor, class StoppingErrorOf>
+std::pair<int, double> dfsph_correct(const Executor& exec, const DfsphArrays& a,
+                                     const DfsphSettings& s, Real dt, bool divergence,
+                                     StoppingErrorOf&& stopping_error) {
+  Real* stiffness = divergence ? a.divergence_stiffness : a.density_stiffness;
+  const double eta = divergence ? s.eta_divergence : s.eta;
+  const int min_iterations = divergence ? 1 : s.min_iterations;
+  const int max_iterations = divergence ? s.max_divergence_iterations : s.max_iterations;
+  const Real dt_power = divergence ? dt : dt * dt;
+  const DfsphVelocityStage update{a.f, a.fluid_gradient, a.boundary_gradient, a.k, dt, a.v_star};
+  const DfsphStiffnessStage measure{a.f,
+                                    a.fluid_gradient,
+                                    a.boundary_gradient,
+                                    a.boundary_divergence,
+                                    a.density,
+                                    a.factor,
+                                    a.v_star,
+                                    dt,
+                                    Real(s.omega),
+                                    divergence,
+                                    kDfsphMinDivergenceNeighbours,
+                                    a.rho_adv,
+                                    a.k};
+  const DfsphAccumulateStage accumulate{a.k, dt_power, a.k_total, stiffness};
+  if (s.warm_start) {
+    exec.run(a.owned, measure);
+    exec.run(a.owned, DfsphWarmStartStage{a.f, a.rho_adv, dt_power, stiffness, a.k, a.k_total});
+    exec.run(a.owned, update);
+  } else {
+    exec.run(a.owned, ClearStiffnessStage{stiffness});
+  }
+  exec.run(a.owned, measure);
+  // An exact stopping error (a fixed-point sum for the average): the same iteration count for
+  // any thread count and any backend. The divergence-free solver bounds the average, as the
+  // paper does.
+  const CompressionValue compression{a.f.rest_density, a.f.material, a.rho_adv};
+  auto error_now = [&] {
+    if (!divergence) return double(stopping_error(compression));
+    return a.owned.size == 0 ? 0.0
+                             : exec.fixed_point_sum(a.owned, compression) / double(a.owned.size);
+  };
+  double error = error_now();
+  int iteration = 0;
+  while (iteration < max_iterations && (iteration < min_iterations || error > eta)) {
+    exec.run(a.owned, accumulate);
+    exec.run(a.owned, update);
+    exec.run(a.owned, measure);
+    error = error_now();
+    ++iteration;
+  }
+  return {iteration, error};
+}
+
+// The constant-density solve: v* += dt a_other, the correction, and the step's statistics.
+template <class Executor, class StoppingErrorOf>
+SolverStats dfsph_pressure_solve(const Executor& exec, const DfsphArrays& a, const DfsphSettings& s,
+                                 Real dt, StoppingErrorOf&& stopping_error) {
+  exec.run(a.owned, VelocityKickStage{a.other_acceleration, dt, a.v_star});
+  const auto [iterations, error] = dfsph_correct(exec, a, s, dt, false, stopping_error);
+  const CompressionValue compression{a.f.rest_density, a.f.material, a.rho_adv};
+  SolverStats stats;
+  stats.iterations = iterations;
+  stats.avg_density_error = s.stops_on_average || a.owned.size == 0
+                                ? error
+                                : exec.fixed_point_sum(a.owned, compression) / double(a.owned.size);
+  stats.max_density_error = double(exec.max_of(a.owned, compression));
+  return stats;
+}
+
+// v = v*, x += dt v, and the exported pressure, after the reactions on bodies.
+template <class Executor>
+void run_dfsph_integration(const Executor& exec, const DfsphArrays& a, Real dt, Vec3* velocity,
+                           Vec3* position, Real* pressure) {
+  exec.run(a.owned,
+           DfsphIntegrateStage{a.v_star, a.k_total, a.density, dt, velocity, position, pressure});
+}
+
+}  // namespace upf
