@@ -6,48 +6,28 @@ namespace upf {
 
 namespace {
 
-// Building the list is bookkeeping on the host, like building neighbour lists, not a particle
-// stage: it runs before the sub-steps, whose stages read the list through DemContactView.
-template <class Body>
-void for_each_owned(const CpuExecutor& exec, const OwnedParticles& owned, Body&& body) {
-  exec.for_each_index(owned.size(), [&](std::size_t k) { body(owned[k]); });
+DemCandidateSources candidate_sources(const Particles& p, const OwnedParticles& owned,
+                                      const DemContactList::Sources& s) {
+  return {p.position.data(),
+          p.type.data(),
+          p.material.data(),
+          p.id.data(),
+          p.body.data(),
+          s.radius,
+          owned.materials(),
+          view_of(*s.grains),
+          s.reactions ? view_of(*s.reactions) : NeighbourView{},
+          s.boxes->data(),
+          std::uint32_t(s.boxes->size()),
+          s.skin};
 }
 
-// Calls emit(partner, key) for each candidate of grain i: container faces first (container and
-// face order), then the neighbours it holds, in neighbour-list order.
-template <class Holds, class Emit>
-void for_each_candidate(const Particles& p, const DemContactList::Sources& s, std::uint32_t i,
-                        Holds&& holds, Emit&& emit) {
-  const Vec3& x = p.position[i];
-  const Real reach = s.radius[i] + s.skin;
-  const std::vector<ContainerBox>& boxes = *s.boxes;
-  for (std::size_t b = 0; b < boxes.size(); ++b) {
-    const ContainerBox& box = boxes[b];
-    bool near = true;
-    for (int a = 0; a < 3; ++a)
-      near = near && x[a] > box.min[a] - reach && x[a] < box.max[a] + reach;
-    if (!near) continue;
-    for (int face = 0; face < 6; ++face) {
-      const int a = face / 2;
-      const Real gap = face % 2 == 0 ? x[a] - box.min[a] : box.max[a] - x[a];
-      if (gap < reach)
-        emit(kDemWallPartner | std::uint32_t(b * 6 + std::size_t(face)), dem_wall_key(b, face));
-    }
-  }
-  const NeighbourList& list = *s.grains;
-  for (std::uint32_t k = list.offsets[i]; k < list.offsets[i + 1]; ++k) {
-    const std::uint32_t j = list.indices[k];
-    if (holds(i, j)) emit(j, std::uint32_t(p.id[j]));
-  }
+// offsets[i + 1] += offsets[i]: counts into CSR offsets.
+void scan_counts(std::vector<std::uint32_t>& offsets) {
+  for (std::size_t i = 0; i + 1 < offsets.size(); ++i) offsets[i + 1] += offsets[i];
 }
 
 }  // namespace
-
-bool DemContactList::holds(const Particles& p, const OwnedParticles& owned, std::uint32_t i,
-                           std::uint32_t j) {
-  if (p.type[j] == ParticleType::Granular) return p.id[j] > p.id[i] || !owned.owns(p.material[j]);
-  return p.body[j] != kNoBody;
-}
 
 void DemContactList::clear() {
   *this = DemContactList{};
@@ -59,90 +39,48 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned,
   // Last step's candidates become the history the new ones carry their springs from.
   std::swap(last_key_, key_);
   std::swap(last_xi_, xi_);
-  const auto held = [&](std::uint32_t i, std::uint32_t j) { return holds(p, owned, i, j); };
+  const DemCandidateSources s = candidate_sources(p, owned, sources);
 
   offsets_.assign(n + 1, 0);
-  for_each_owned(exec, owned, [&](std::uint32_t i) {
-    std::uint32_t count = 0;
-    for_each_candidate(p, sources, i, held, [&](std::uint32_t, std::uint32_t) { ++count; });
-    offsets_[i + 1] = count;
-  });
-  for (std::size_t i = 0; i < n; ++i) offsets_[i + 1] += offsets_[i];
+  exec.run(owned.range(), DemCountCandidatesStage{s, offsets_.data()});
+  scan_counts(offsets_);
   const std::size_t total = offsets_[n];
   partner_.resize(total);
   key_.resize(total);
-  xi_.assign(total, Vec3{});
+  xi_.resize(total);
   force_.resize(total);
   partner_torque_.resize(total);
   partner_rolling_.resize(total);
-  touching_.assign(total, 0);
-  for_each_owned(exec, owned, [&](std::uint32_t i) {
-    std::uint32_t k = offsets_[i];
-    for_each_candidate(p, sources, i, held, [&](std::uint32_t partner, std::uint32_t key) {
-      partner_[k] = partner;
-      key_[k] = key;
-      ++k;
-    });
-  });
+  touching_.resize(total);
+  exec.run(owned.range(), DemFillCandidatesStage{s, offsets_.data(), partner_.data(), key_.data(),
+                                                 xi_.data(), touching_.data()});
   carry_springs(p, owned, exec);
-  build_reverse(p, owned, sources, exec);
+  build_reverse(s, n, exec);
 }
 
 void DemContactList::carry_springs(const Particles& p, const OwnedParticles& owned,
                                    const CpuExecutor& exec) {
   // last_begin_by_id_ still describes last_key_ / last_xi_.
-  for_each_owned(exec, owned, [&](std::uint32_t i) {
-    const ParticleId me = p.id[i];
-    if (me >= last_count_by_id_.size() || last_count_by_id_[me] == 0) return;
-    const std::uint32_t first = last_begin_by_id_[me], last = first + last_count_by_id_[me];
-    for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k)
-      for (std::uint32_t o = first; o < last; ++o)
-        if (last_key_[o] == key_[k]) {
-          xi_[k] = last_xi_[o];
-          break;
-        }
-  });
+  exec.run(owned.range(),
+           DemCarrySpringsStage{p.id.data(), offsets_.data(), key_.data(), xi_.data(),
+                                last_begin_by_id_.data(), last_count_by_id_.data(),
+                                std::uint32_t(last_count_by_id_.size()), last_key_.data(),
+                                last_xi_.data()});
   last_begin_by_id_.assign(p.id_bound(), 0);
   last_count_by_id_.assign(p.id_bound(), 0);
-  for_each_owned(exec, owned, [&](std::uint32_t i) {
-    last_begin_by_id_[p.id[i]] = offsets_[i];
-    last_count_by_id_[p.id[i]] = offsets_[i + 1] - offsets_[i];
-  });
+  exec.run(owned.range(), DemRecordByIdStage{p.id.data(), offsets_.data(), last_begin_by_id_.data(),
+                                             last_count_by_id_.data()});
 }
 
-void DemContactList::build_reverse(const Particles& p, const OwnedParticles& owned,
-                                   const Sources& sources, const CpuExecutor& exec) {
-  const std::size_t n = p.size();
-  // Calls emit(k) for each candidate with partner j, in j's neighbour-list order.
-  const auto for_each_reverse = [&](std::size_t j, auto&& emit) {
-    const NeighbourList* list = nullptr;
-    if (p.type[j] == ParticleType::Granular && owned.owns(p.material[j]))
-      list = sources.grains;
-    else if (p.type[j] == ParticleType::Rigid && sources.reactions)
-      list = sources.reactions;
-    if (!list) return;
-    for (std::uint32_t r = list->offsets[j]; r < list->offsets[j + 1]; ++r) {
-      const std::uint32_t i = list->indices[r];
-      if (p.type[i] != ParticleType::Granular || !owned.owns(p.material[i])) continue;
-      for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k)
-        if (partner_[k] == j) {
-          emit(k);
-          break;
-        }
-    }
-  };
+void DemContactList::build_reverse(const DemCandidateSources& s, std::size_t n,
+                                   const CpuExecutor& exec) {
+  const DemReverseCandidates reverse{s, offsets_.data(), partner_.data()};
   reverse_offsets_.assign(n + 1, 0);
-  exec.for_each_index(n, [&](std::size_t j) {
-    std::uint32_t count = 0;
-    for_each_reverse(j, [&](std::uint32_t) { ++count; });
-    reverse_offsets_[j + 1] = count;
-  });
-  for (std::size_t j = 0; j < n; ++j) reverse_offsets_[j + 1] += reverse_offsets_[j];
+  exec.run(all_particles(n), DemCountReverseStage{reverse, reverse_offsets_.data()});
+  scan_counts(reverse_offsets_);
   reverse_.resize(reverse_offsets_[n]);
-  exec.for_each_index(n, [&](std::size_t j) {
-    std::uint32_t r = reverse_offsets_[j];
-    for_each_reverse(j, [&](std::uint32_t k) { reverse_[r++] = k; });
-  });
+  exec.run(all_particles(n),
+           DemFillReverseStage{reverse, reverse_offsets_.data(), reverse_.data()});
 }
 
 void DemContactList::save_state(StateWriter& out) const {

@@ -12,7 +12,8 @@
 // The list is rebuilt every world step from the neighbour lists. Springs carry over by the
 // stable (grain id, partner key) of their pair, so reordering the particles loses nothing.
 // Sum orders follow the neighbour lists, which depend on positions and ids only: results do not
-// depend on memory order or thread count.
+// depend on memory order or thread count. The building passes are the plain stages of
+// dem_contact_stages.h, so a device pipeline can build the same list.
 #pragma once
 
 #include <cstdint>
@@ -24,15 +25,11 @@
 #include "framework/neighbours/neighbour_list.h"
 #include "framework/particles/particles.h"
 #include "framework/world/container_box.h"
+#include "solvers/dem/dem_contact_stages.h"
 #include "solvers/dem/dem_views.h"
 #include "solvers/fluid/owned_particles.h"
 
 namespace upf {
-
-// Wall faces have keys too: container c, face f (0..5) gets a key above every particle id.
-inline constexpr std::uint32_t dem_wall_key(std::size_t container, int face) {
-  return 0xFFFFFFFFu - std::uint32_t(container * 6 + std::size_t(face));
-}
 
 class DemContactList {
  public:
@@ -97,13 +94,9 @@ class DemContactList {
   void restore_state(StateReader& in);
 
  private:
-  // Whether grain i holds the pair with neighbour j (see the header comment).
-  static bool holds(const Particles& p, const OwnedParticles& owned, std::uint32_t i,
-                    std::uint32_t j);
   void carry_springs(const Particles& particles, const OwnedParticles& owned,
                      const CpuExecutor& exec);
-  void build_reverse(const Particles& particles, const OwnedParticles& owned,
-                     const Sources& sources, const CpuExecutor& exec);
+  void build_reverse(const DemCandidateSources& sources, std::size_t n, const CpuExecutor& exec);
 
   std::vector<std::uint32_t> offsets_;  // by particle, size() + 1
   std::vector<std::uint32_t> partner_, key_;
