@@ -6,6 +6,7 @@
 
 #include "framework/world/world.h"
 #include "solvers/dem/dem_stages.h"
+#include "solvers/dem/dem_steps.h"
 
 namespace upf {
 
@@ -96,6 +97,7 @@ void DemSolver::step(World& world, Real dt, StageRunner& run) {
   const int n = std::max(1, int(std::ceil(double(dt) / double(substep_) - 1e-9)));
   h_ = dt / Real(n);
   const bool liquid = grain_liquid_list_ >= 0;
+  DemArrays a{};
   run("dem_contacts", [&] {
     const Particles& particles = world.particles();
     owned_.rebuild(particles);
@@ -114,21 +116,13 @@ void DemSolver::step(World& world, Real dt, StageRunner& run) {
     // half-step velocities, kick half. The forces are kept in particle fields, so they follow the
     // particles through reordering; the first step computes them first.
     if (liquid) interpolate_fluid(world);
+    a = arrays(world);
     if (!primed_) {
-      substep_forces(world, 0, 0);
-      gather_pairs(world);
+      run_dem_forces(world.executor(), a, h_, 0, 0);
       primed_ = true;
     }
   });
-  for (int k = 0; k < n; ++k) {
-    run("dem_integration", [&] { kick_drift(world, Real(0.5) * h_, h_); });
-    run("dem_contacts", [&] {
-      substep_forces(world, Real(k + 1) * h_, h_ / dt);
-      gather_pairs(world);
-      if (reaction_list_ >= 0) substep_reactions(world, h_ / dt);
-    });
-    run("dem_integration", [&] { kick_drift(world, Real(0.5) * h_, 0); });
-  }
+  run_dem_substeps(world.executor(), a, dt, n, h_, run);
   if (liquid && world.coupling().active(CouplingArray::LiquidForce))
     run("dem_contacts", [&] { liquid_reactions(world); });
   stats_.iterations = n;
@@ -170,37 +164,30 @@ void DemSolver::liquid_reactions(World& world) {
                              world.coupling()[CouplingArray::LiquidForce].data()});
 }
 
-void DemSolver::substep_forces(World& world, Real t_in_step, Real fluid_weight) {
+DemArrays DemSolver::arrays(World& world) {
   Particles& p = world.particles();
-  world.executor().run(
-      owned_.range(),
-      DemForcesStage{model_, contacts_.view(), pairs_->table(), p.position.data(),
-                     p.velocity.data(), p[angular_velocity_].data(), p.mass.data(),
-                     p[radius_].data(), p.type.data(), p.material.data(), world.containers().data(),
-                     world.settings().gravity, h_, t_in_step,
-                     fluid_.empty() ? nullptr : fluid_.data(), fluid_weight, fluid_force_.data(),
-                     p[force_].data(), p[torque_].data()});
-}
-
-void DemSolver::gather_pairs(World& world) {
-  Particles& p = world.particles();
-  world.executor().run(owned_.range(),
-                       DemGatherPairsStage{contacts_.view(), p[force_].data(), p[torque_].data()});
-}
-
-void DemSolver::substep_reactions(World& world, Real weight) {
-  world.executor().run(
-      ParticleRange{rigid_.data(), rigid_.size()},
-      DemBoundaryReactionStage{contacts_.view(), weight,
-                               world.coupling()[CouplingArray::BoundaryForce].data()});
-}
-
-void DemSolver::kick_drift(World& world, Real h_kick, Real h_drift) {
-  Particles& p = world.particles();
-  world.executor().run(owned_.range(),
-                       DemKickDriftStage{p[force_].data(), p[torque_].data(), p.mass.data(),
-                                         p[radius_].data(), h_kick, h_drift, p.position.data(),
-                                         p.velocity.data(), p[angular_velocity_].data()});
+  DemArrays a{};
+  a.model = model_;
+  a.contacts = contacts_.view();
+  a.pairs = pairs_->table();
+  a.owned = owned_.range();
+  a.rigid = ParticleRange{rigid_.data(), rigid_.size()};
+  a.x = p.position.data();
+  a.v = p.velocity.data();
+  a.w = p[angular_velocity_].data();
+  a.mass = p.mass.data();
+  a.radius = p[radius_].data();
+  a.type = p.type.data();
+  a.material = p.material.data();
+  a.boxes = world.containers().data();
+  a.gravity = world.settings().gravity;
+  a.fluid = fluid_.empty() ? nullptr : fluid_.data();
+  a.fluid_force = fluid_force_.data();
+  a.force = p[force_].data();
+  a.torque = p[torque_].data();
+  a.boundary_force =
+      reaction_list_ >= 0 ? world.coupling()[CouplingArray::BoundaryForce].data() : nullptr;
+  return a;
 }
 
 }  // namespace upf

@@ -30,6 +30,7 @@
 #include "solvers/dem/dem_contact_list.h"
 #include "solvers/dem/dem_fluid_drag.h"
 #include "solvers/dem/dem_pairs.h"
+#include "solvers/dem/dem_steps.h"
 #include "solvers/fluid/owned_particles.h"
 
 namespace upf {
@@ -63,16 +64,10 @@ class DemSolver : public Solver {
   Real substep() const { return substep_; }
 
  private:
-  // Contact, gravity and fluid forces at the current state; the fluid force is added to the
-  // step's average with weight `fluid_weight`.
-  void substep_forces(World& world, Real t_in_step, Real fluid_weight);
-  // Adds to each grain the opposite of the pair forces its lower-id partners computed.
-  void gather_pairs(World& world);
   void interpolate_fluid(World& world);
   void liquid_reactions(World& world);
-  void substep_reactions(World& world, Real weight);
-  // v += F h_kick / m, w += tau h_kick / I, then x += v h_drift.
-  void kick_drift(World& world, Real h_kick, Real h_drift);
+  // The step's views for the shared sub-steps (dem_steps.h).
+  DemArrays arrays(World& world);
 
   DemModel model_;
   double substep_fraction_;
