@@ -88,9 +88,9 @@ int main(int argc, char** argv) {
       std::printf("  device memory: %.0f bytes per particle (estimate before the run: %.0f)\n",
                   median(bytes) / double(total), estimate / double(total));
     if (copy_gbps > 0) {
-      // Stored gradients: about 845 + 96 n bytes per liquid particle and step, n fluid
-      // neighbours (taken as 40 at h = 2 s); docs/device.md.
-      const double moved = double(liquid) * (845.0 + 96.0 * 40.0);
+      // Recomputed gradients (FluidGradients): about 845 + 36 n bytes per liquid particle and
+      // step, n fluid neighbours (taken as 40 at h = 2 s); the arithmetic.
+      const double moved = double(liquid) * (845.0 + 36.0 * 40.0);
       std::printf("  modelled traffic: %.2f GB/step, %.1f %% of the %.0f GB/s copy bandwidth\n",
                   moved / 1e9, 100.0 * moved / (step_ms / 1000.0) / (copy_gbps * 1e9), copy_gbps);
     }

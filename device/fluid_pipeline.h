@@ -91,7 +91,7 @@ struct FluidStep {
   Real dt;
   Real* density;
   Real* pressure;
-  Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   Vec3* boundary_gradient;
   Vec3* other_acceleration;
   Vec3* pressure_acceleration;
@@ -292,12 +292,14 @@ class FluidPipeline final : public DevicePipeline {
 
     stages_("non_pressure", [&] {
       step.owned = rebuild_owned();
-      fluid_gradient_.resize(fluid_list_.total());
+      // Recomputed where used unless the setup asks to store them (FluidGradients).
+      fluid_gradient_.resize(setup_.store_gradients ? fluid_list_.total() : 0);
       boundary_gradient_.resize(n);
       other_acceleration_.resize(n);
       pressure_acceleration_.resize(n);
       step.f = fluid_view();
-      step.fluid_gradient = raw<Vec3>(fluid_gradient_);
+      step.fluid_gradient =
+          setup_.store_gradients ? FluidGradients(raw<Vec3>(fluid_gradient_)) : FluidGradients();
       step.boundary_gradient = raw<Vec3>(boundary_gradient_);
       step.other_acceleration = raw<Vec3>(other_acceleration_);
       step.pressure_acceleration = raw<Vec3>(pressure_acceleration_);

@@ -24,6 +24,9 @@ struct FluidSetup {
   Real support_radius = 0;
   int reorder_every = 0;
   bool reactions = false;  // rigid particles whose reactions a body system sums
+  // Keep grad W_ij per fluid pair (12 B a pair, as the CPU path does) instead of recomputing it
+  // where used: the same bits either way (FluidGradients).
+  bool store_gradients = false;
   int threads = 0;
   std::vector<std::string> stages;  // the solver's stage names, for the metrics
   std::string density = "density", pressure = "pressure";  // the exported fields

@@ -25,7 +25,7 @@ namespace upf {
 // independent of dt, to `stiffness` (the warm start of the next step).
 struct DfsphStiffnessStage {
   FluidView f;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   const Real* boundary_divergence;
   const Real* density;
@@ -97,7 +97,7 @@ struct ClearStiffnessStage {
 // particle the solver does not move is 0.
 struct DfsphVelocityStage {
   FluidView f;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   const Real* k;
   Real dt;
@@ -107,7 +107,7 @@ struct DfsphVelocityStage {
     Vec3 sum = boundary_gradient[i] * (f.rest_density[f.material[i]] * ki);
     for (std::uint32_t n = f.fluid.offsets[i]; n < f.fluid.offsets[i + 1]; ++n) {
       const std::uint32_t j = f.fluid.indices[n];
-      sum += fluid_gradient[n] * (f.mass[j] * (ki + k[j]));
+      sum += fluid_gradient.at(f, i, n) * (f.mass[j] * (ki + k[j]));
     }
     v[i] -= sum * dt;
   }

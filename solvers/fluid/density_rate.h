@@ -18,7 +18,7 @@ namespace upf {
 // `fluid_gradient` holds grad W_ij per fluid-list slot, `boundary_gradient` sum_b V_b grad W_ib.
 struct InverseDiagonalStage {
   FluidView f;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   Real* inverse_diagonal;
   UPF_HD void operator()(std::uint32_t i) const {
@@ -26,7 +26,7 @@ struct InverseDiagonalStage {
     Vec3 sum = boundary_gradient[i] * rho0;
     Real sum_squares = 0;
     for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-      const Vec3 g = fluid_gradient[k] * f.mass[f.fluid.indices[k]];
+      const Vec3 g = fluid_gradient.at(f, i, k) * f.mass[f.fluid.indices[k]];
       sum += g;
       sum_squares += squared_norm(g);
     }
@@ -50,14 +50,14 @@ struct BoundaryVelocityDivergenceStage {
 };
 
 // Drho_i/Dt at the velocities `v` (any particle's; boundaries through boundary_divergence).
-UPF_HD inline Real density_rate(const FluidView& f, const Vec3* fluid_gradient,
+UPF_HD inline Real density_rate(const FluidView& f, FluidGradients fluid_gradient,
                                 const Vec3& boundary_gradient, Real boundary_divergence,
                                 const Vec3* v, std::uint32_t i) {
   const Vec3 vi = v[i];
   Real rate = 0;
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    rate += f.mass[j] * dot(vi - v[j], fluid_gradient[k]);
+    rate += f.mass[j] * dot(vi - v[j], fluid_gradient.at(f, i, k));
   }
   const Real rho0 = f.rest_density[f.material[i]];
   return rate + rho0 * (dot(vi, boundary_gradient) - boundary_divergence);

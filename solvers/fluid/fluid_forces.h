@@ -32,15 +32,17 @@ UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32
 }
 
 // Density at the current positions and the kernel gradients there, in one pass: grad W_ij goes
-// into fluid_gradient[k] for each fluid-list slot k of i and sum_b V_b grad W_ib into
-// boundary_gradient. The gradients are reused by every force of the step.
-UPF_HD inline Real density_and_gradients(const FluidView& f, Vec3* fluid_gradient,
+// into the store of `fluid_gradient` (if it has one) for each fluid-list slot k of i and
+// sum_b V_b grad W_ib into boundary_gradient. The gradients are reused by every force of the step.
+UPF_HD inline Real density_and_gradients(const FluidView& f, FluidGradients fluid_gradient,
                                          Vec3& boundary_gradient, std::uint32_t i) {
   const Vec3 xi = f.x[i];
   Real rho = f.mass[i] * f.kernel.value(Real(0));
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    rho += f.mass[j] * f.kernel.value_and_gradient(xi - f.x[j], fluid_gradient[k]);
+    Vec3 g;
+    rho += f.mass[j] * f.kernel.value_and_gradient(xi - f.x[j], g);
+    if (fluid_gradient.stored) fluid_gradient.stored[k] = g;
   }
   const Real rho0 = f.rest_density[f.material[i]];
   Vec3 boundary{};
@@ -56,9 +58,9 @@ UPF_HD inline Real density_and_gradients(const FluidView& f, Vec3* fluid_gradien
   return rho + rho0 * boundary_density;
 }
 
-// `fluid_gradient` as filled by density_and_gradients for this step.
+// `fluid_gradient` as density_and_gradients left it this step.
 UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* density,
-                                          const Vec3* fluid_gradient, std::uint32_t i) {
+                                          FluidGradients fluid_gradient, std::uint32_t i) {
   const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
   const Vec3 xi = f.x[i];
   const Vec3 vi = f.v[i];
@@ -69,8 +71,8 @@ UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* densit
       const std::uint32_t j = f.fluid.indices[k];
       const Vec3 xij = xi - f.x[j];
       const Real vx = dot(vi - f.v[j], xij);
-      a +=
-          fluid_gradient[k] * (f.mass[j] / density[j] * vx / (squared_norm(xij) + Real(0.01) * h2));
+      a += fluid_gradient.at(f, i, k) *
+           (f.mass[j] / density[j] * vx / (squared_norm(xij) + Real(0.01) * h2));
     }
     a *= Real(10) * nu;
   }

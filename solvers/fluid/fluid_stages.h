@@ -12,8 +12,8 @@ namespace upf {
 // Density and kernel gradients at the current positions (fluid_forces.h).
 struct DensityAndGradientsStage {
   FluidView f;
-  Vec3* fluid_gradient;     // per fluid-list slot
-  Vec3* boundary_gradient;  // per particle
+  FluidGradients fluid_gradient;  // per fluid-list slot
+  Vec3* boundary_gradient;        // per particle
   Real* density;
   UPF_HD void operator()(std::uint32_t i) const {
     density[i] = density_and_gradients(f, fluid_gradient, boundary_gradient[i], i);
@@ -24,7 +24,7 @@ struct DensityAndGradientsStage {
 struct GravityAndViscosityStage {
   FluidView f;
   const Real* density;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   Vec3 gravity;
   Vec3* a_other;
   UPF_HD void operator()(std::uint32_t i) const {
@@ -112,7 +112,7 @@ struct PressureOverDensitySquared {
 // the device pipeline's): density and kernel gradients at the current positions, then
 // a_other = g + viscosity, plus F / m from other materials when `liquid_force` is not null.
 struct NonPressureArrays {
-  Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   Vec3* boundary_gradient;
   Vec3* other_acceleration;
   Real* density;

@@ -29,6 +29,23 @@ struct FluidView {
   CubicSplineKernel kernel;
 };
 
+// The kernel gradients grad W_ij of a step's fluid pairs, by fluid-list slot k of particle i:
+// stored once by density_and_gradients (12 B a pair), or, with nothing stored, recomputed where
+// they are used, from the same positions by the same function, so with the same bits (positions
+// do not move between the shared forces and the integration). The CPU path stores them; the
+// device pipeline recomputes them, trading arithmetic for memory and memory traffic.
+struct FluidGradients {
+  Vec3* stored = nullptr;
+  FluidGradients() = default;
+  UPF_HD FluidGradients(Vec3* gradients) : stored(gradients) {}  // NOLINT: a pointer is a store
+  UPF_HD Vec3 at(const FluidView& f, std::uint32_t i, std::uint32_t k) const {
+    if (stored) return stored[k];
+    Vec3 g;
+    (void)f.kernel.value_and_gradient(f.x[i] - f.x[f.fluid.indices[k]], g);
+    return g;
+  }
+};
+
 // Per-material constants, copied once in prepare() into arrays a view can point at.
 struct FluidMaterialTable {
   std::vector<Real> rest_density, viscosity, boundary_viscosity;

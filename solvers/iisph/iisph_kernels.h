@@ -20,7 +20,7 @@ namespace upf {
 // rho_adv_i = rho_i + dt Drho_i/Dt at the advected velocities.
 struct IisphAdvectedDensityStage {
   FluidView f;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   const Real* boundary_divergence;
   const Real* density;
@@ -42,7 +42,7 @@ struct HalvePressureStage {
 // The pressure acceleration a_i at pressures `pressure` (0 for particles not owned).
 struct IisphPressureAccelerationStage {
   FluidView f;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   const Real* density;
   const Real* pressure;
@@ -52,7 +52,8 @@ struct IisphPressureAccelerationStage {
     Vec3 a = boundary_gradient[i] * (-f.rest_density[f.material[i]] * pi);
     for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
       const std::uint32_t j = f.fluid.indices[k];
-      a -= fluid_gradient[k] * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
+      a -=
+          fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
     }
     a_pressure[i] = a;
   }
@@ -62,7 +63,7 @@ struct IisphPressureAccelerationStage {
 // goes to `predicted` (the stopping test), the new pressure to `next`.
 struct IisphPressureUpdateStage {
   FluidView f;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   const Real* density;
   const Real* inverse_diagonal;  // 1 / D_i
@@ -79,7 +80,7 @@ struct IisphPressureUpdateStage {
     Real change = rho0 * dot(ai, boundary_gradient[i]);
     for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
       const std::uint32_t j = f.fluid.indices[k];
-      change += f.mass[j] * dot(ai - a_pressure[j], fluid_gradient[k]);
+      change += f.mass[j] * dot(ai - a_pressure[j], fluid_gradient.at(f, i, k));
     }
     change *= dt * dt;
     predicted[i] = rho_adv[i] + change;

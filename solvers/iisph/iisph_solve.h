@@ -19,7 +19,7 @@ struct IisphArrays {
   FluidView f;
   ParticleRange owned;
   std::size_t n;  // all particles
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   const Vec3* other_acceleration;
   const Real* density;

@@ -15,7 +15,7 @@ struct PcisphLoopArrays {
   FluidView f;
   ParticleRange owned;
   const Vec3* other_acceleration;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   Vec3* pressure_acceleration;
   Vec3* x_star;

@@ -17,7 +17,7 @@ namespace upf {
 // `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from density_and_gradients:
 // the positions do not move during the correction loop, so neither do the gradients.
 UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* pressure,
-                                                const Vec3* fluid_gradient,
+                                                FluidGradients fluid_gradient,
                                                 const Vec3& boundary_gradient, std::uint32_t i) {
   const Real rho0 = f.rest_density[f.material[i]];
   const Real pi = pressure[i] / (rho0 * rho0);
@@ -25,7 +25,7 @@ UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* 
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
     const Real rho0j = f.rest_density[f.material[j]];
-    a -= fluid_gradient[k] * (f.mass[j] * (pi + pressure[j] / (rho0j * rho0j)));
+    a -= fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (rho0j * rho0j)));
   }
   // Psi_b p_i / rho0^2 = V_b rho0 p_i / rho0^2.
   a -= boundary_gradient * (rho0 * pi);
@@ -64,7 +64,7 @@ struct PcisphCorrectPressureStage {
 struct PcisphPressureAccelerationStage {
   FluidView f;
   const Real* pressure;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   Vec3* a_pressure;
   UPF_HD void operator()(std::uint32_t i) const {

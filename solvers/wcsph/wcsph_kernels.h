@@ -21,14 +21,14 @@ UPF_HD inline Real tait_pressure(Real rho, Real rest_density, Real b) {
 //         -sum_b Psi_b (p_i / rho_i^2) grad W_ib          (Akinci et al. 2012, eq. 10)
 // `boundary_gradient` is sum_b V_b grad W_ib; Psi_b = rho0_i V_b.
 UPF_HD inline Vec3 wcsph_pressure_acceleration(const FluidView& f, const Real* density,
-                                               const Real* pressure, const Vec3* fluid_gradient,
+                                               const Real* pressure, FluidGradients fluid_gradient,
                                                const Vec3& boundary_gradient, std::uint32_t i) {
   const Real rho = density[i];
   const Real pi = pressure[i] / (rho * rho);
   Vec3 a{};
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    a -= fluid_gradient[k] * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
+    a -= fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
   }
   a -= boundary_gradient * (f.rest_density[f.material[i]] * pi);
   return a;
@@ -39,8 +39,8 @@ UPF_HD inline Vec3 wcsph_pressure_acceleration(const FluidView& f, const Real* d
 //   Pi_ij = -nu min(v_ij . x_ij, 0) / (|x_ij|^2 + 0.01 h^2),  nu = 2 alpha h c / (rho_i + rho_j),
 // with h the smoothing length, H / 2. `two_alpha_h_c` = 2 alpha h c.
 UPF_HD inline Vec3 artificial_viscosity_acceleration(const FluidView& f, const Real* density,
-                                                     const Vec3* fluid_gradient, Real two_alpha_h_c,
-                                                     std::uint32_t i) {
+                                                     FluidGradients fluid_gradient,
+                                                     Real two_alpha_h_c, std::uint32_t i) {
   const Real h = Real(0.5) * f.kernel.support_radius();
   const Vec3 xi = f.x[i];
   const Vec3 vi = f.v[i];
@@ -52,7 +52,7 @@ UPF_HD inline Vec3 artificial_viscosity_acceleration(const FluidView& f, const R
     if (vx >= 0) continue;
     const Real nu = two_alpha_h_c / (density[i] + density[j]);
     const Real pi_ij = -nu * vx / (squared_norm(xij) + Real(0.01) * h * h);
-    a -= fluid_gradient[k] * (f.mass[j] * pi_ij);
+    a -= fluid_gradient.at(f, i, k) * (f.mass[j] * pi_ij);
   }
   return a;
 }
@@ -73,7 +73,7 @@ struct WcsphPressureAccelerationStage {
   FluidView f;
   const Real* density;
   const Real* pressure;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   Vec3* a_pressure;
   UPF_HD void operator()(std::uint32_t i) const {
@@ -86,7 +86,7 @@ struct WcsphPressureAccelerationStage {
 struct ArtificialViscosityStage {
   FluidView f;
   const Real* density;
-  const Vec3* fluid_gradient;
+  FluidGradients fluid_gradient;
   Real two_alpha_h_c;
   Vec3* a_other;
   UPF_HD void operator()(std::uint32_t i) const {

@@ -11,7 +11,7 @@ namespace upf {
 // After the shared non-pressure forces: the artificial viscosity (eq. 11), when 2 alpha h c > 0.
 template <class Executor>
 void run_wcsph_viscosity(const Executor& exec, ParticleRange owned, const FluidView& f,
-                         const Real* density, const Vec3* fluid_gradient, Real two_alpha_h_c,
+                         const Real* density, FluidGradients fluid_gradient, Real two_alpha_h_c,
                          Vec3* a_other) {
   if (!(two_alpha_h_c > 0)) return;
   exec.run(owned, ArtificialViscosityStage{f, density, fluid_gradient, two_alpha_h_c, a_other});
@@ -21,7 +21,7 @@ void run_wcsph_viscosity(const Executor& exec, ParticleRange owned, const FluidV
 template <class Executor>
 void run_wcsph_pressure(const Executor& exec, ParticleRange owned, const FluidView& f,
                         const Real* density, const Real* tait_factor, Real* pressure,
-                        const Vec3* fluid_gradient, const Vec3* boundary_gradient,
+                        FluidGradients fluid_gradient, const Vec3* boundary_gradient,
                         Vec3* a_pressure) {
   exec.run(owned, TaitPressureStage{f, density, tait_factor, pressure});
   exec.run(owned, WcsphPressureAccelerationStage{f, density, pressure, fluid_gradient,
