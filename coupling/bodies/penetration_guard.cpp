@@ -6,10 +6,6 @@
 
 namespace upf {
 
-namespace {
-constexpr const char* kLocalPositionField = "body.local_position";
-}
-
 void PenetrationGuard::request(World& world) {
   list_ = world.request_neighbours(kLiquidMask, kBoundaryMask);
 }
@@ -20,12 +16,12 @@ const std::vector<SurfaceHit>& PenetrationGuard::apply(
   hits_.clear();
   if (list_ < 0) return hits_;
   if (DevicePipeline* device = world.device()) {
-    device->guard_body_surfaces(poses, meshes, layer_depth_, clearance_, kLocalPositionField,
+    device->guard_body_surfaces(poses, meshes, layer_depth_, clearance_, kBodyLocalPositionField,
                                 kBodyLocalNormalField, hits_);
     return hits_;
   }
   Particles& p = world.particles();
-  const std::vector<Vec3>* local = p.find_vector(kLocalPositionField);
+  const std::vector<Vec3>* local = p.find_vector(kBodyLocalPositionField);
   const std::vector<Vec3>* normal = p.find_vector(kBodyLocalNormalField);
   if (!local || !normal) return hits_;
   std::vector<MeshParityView> views(meshes.size());

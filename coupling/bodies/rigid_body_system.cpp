@@ -2,11 +2,9 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "coupling/mesh/closed_mesh.h"
-#include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
 #include "framework/core/state_stream.h"
 #include "framework/core/vec3_eigen.h"

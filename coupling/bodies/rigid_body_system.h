@@ -36,8 +36,6 @@
 
 namespace upf {
 
-inline constexpr const char* kBodyLocalPositionField = "body.local_position";
-
 // A wall slab of a particle container, for Bullet contacts with the container.
 struct StaticWall {
   Eigen::Vector3d center, half_extents;
