@@ -6,18 +6,15 @@
 #include <memory>
 #include <string>
 
-#include "device/fluid_setup.h"
+#include "device/pipeline_setup.h"
 #include "framework/world/device_pipeline.h"
 
 namespace upf::device {
 
-// `Method` is one of the setups of fluid_setup.h (pipeline_factory.h lists them).
-template <class Method>
-std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, Method method);
+std::unique_ptr<DevicePipeline> make_omp_pipeline(const PipelineSetup& setup);
 // Empty when a CUDA device can be used, else why not (the CUDA runtime's error name and text).
 std::string cuda_unavailable_reason();
-template <class Method>
-std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, Method method);
+std::unique_ptr<DevicePipeline> make_cuda_pipeline(const PipelineSetup& setup);
 // Device-to-device copy bandwidth over a buffer of `bytes`, counting bytes read plus written, in
 // GB/s: the median of 10 copies after 2 warm-ups, timed with CUDA events. 0 if it failed.
 double cuda_copy_bandwidth_gbps(std::size_t bytes);

@@ -48,15 +48,8 @@ void cuda_memory(std::size_t& free, std::size_t& total) {
   if (cudaMemGetInfo(&free, &total) != cudaSuccess) free = total = 0;
 }
 
-template <class Setup>
-std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup fluid, Setup method) {
-  return make_pipeline<CudaBackend>(std::move(fluid), std::move(method));
+std::unique_ptr<DevicePipeline> make_cuda_pipeline(const PipelineSetup& setup) {
+  return make_pipeline<CudaBackend>(setup);
 }
-
-template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, PcisphSetup);
-template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, IisphSetup);
-template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, DfsphSetup);
-template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, WcsphSetup);
-template std::unique_ptr<DevicePipeline> make_cuda_pipeline(FluidSetup, SphSetup);
 
 }  // namespace upf::device

@@ -64,7 +64,7 @@ class DeviceBodies {
  public:
   void place(DeviceParticles<Backend>& p, const std::vector<BodyPose>& poses,
              const std::string& local_field) {
-    copy_in(poses_, poses);
+    copy_to_device(poses_, poses);
     run<Backend>(all_particles(p.size()),
                  PlaceBodyParticlesStage{raw<BodyPose>(poses_), raw<BodyId>(p.body),
                                          raw<Vec3>(p.vector_array(local_field)),
@@ -78,7 +78,7 @@ class DeviceBodies {
     out.assign(origins.size(), BodyWrench{});
     const std::size_t n = p.size();
     if (force.size() != n || n == 0) return;
-    copy_in(origins_, origins);
+    copy_to_device(origins_, origins);
     // The rigid particles, sorted by body (stable: index order within a body, though any order
     // gives the same exact sums).
     rigid_.resize(n);
@@ -117,7 +117,7 @@ class DeviceBodies {
     const std::size_t n = p.size();
     if (n == 0) return;
     if (mesh_views_.size() != meshes.size()) upload_meshes(meshes);
-    copy_in(poses_, poses);
+    copy_to_device(poses_, poses);
     hit_records_.resize(n);
     hit_.resize(n);
     run<Backend>(
@@ -150,12 +150,6 @@ class DeviceBodies {
   }
 
  private:
-  template <class T>
-  static void copy_in(vector<T>& to, const std::vector<T>& from) {
-    to.resize(from.size());
-    thrust::copy(from.begin(), from.end(), to.begin());
-  }
-
   // The bodies' meshes (body frame: they never change) into one set of buffers, once; a view
   // per body into them.
   void upload_meshes(const std::vector<const MeshParityData*>& meshes) {
@@ -178,8 +172,8 @@ class DeviceBodies {
       }
       starts.push_back(s);
     }
-    copy_in(mesh_vertices_, vertices);
-    copy_in(mesh_indices_, indices);
+    copy_to_device(mesh_vertices_, vertices);
+    copy_to_device(mesh_indices_, indices);
     std::vector<MeshParityView> views(meshes.size());
     for (std::size_t b = 0; b < meshes.size(); ++b) {
       const MeshParityData* m = meshes[b];
@@ -195,7 +189,7 @@ class DeviceBodies {
       v.bins_y = m->bins_y;
       v.bins_z = m->bins_z;
     }
-    copy_in(mesh_views_, views);
+    copy_to_device(mesh_views_, views);
   }
 
   vector<BodyPose> poses_;

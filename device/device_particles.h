@@ -35,9 +35,10 @@ class DeviceParticles {
 
   // Every array and every named field of `p`.
   void upload(const Particles& p) {
-    Particles::for_each_builtin([](auto& to, const auto& from) { assign(to, from); }, *this, p);
-    for (const auto& [name, f] : p.scalar_fields()) assign(scalars_[name], f.values);
-    for (const auto& [name, f] : p.vector_fields()) assign(vectors_[name], f.values);
+    Particles::for_each_builtin([](auto& to, const auto& from) { copy_to_device(to, from); }, *this,
+                                p);
+    for (const auto& [name, f] : p.scalar_fields()) copy_to_device(scalars_[name], f.values);
+    for (const auto& [name, f] : p.vector_fields()) copy_to_device(vectors_[name], f.values);
     exported_.clear();
     for (const auto& [name, f] : p.scalar_fields()) exported_[name] = f.exported;
     for (const auto& [name, f] : p.vector_fields()) exported_[name] = f.exported;
@@ -85,23 +86,13 @@ class DeviceParticles {
   }
 
  private:
-  template <class T>
-  static void assign(vector<T>& to, const std::vector<T>& from) {
-    to.resize(from.size());
-    thrust::copy(from.begin(), from.end(), to.begin());
-  }
-  template <class T>
-  static void fetch(std::vector<T>& to, const vector<T>& from) {
-    to.resize(from.size());
-    thrust::copy(from.begin(), from.end(), to.begin());
-  }
-
   void download(Particles& p, bool snapshot_only) const {
-    Particles::for_each_builtin([](auto& to, const auto& from) { fetch(to, from); }, p, *this);
+    Particles::for_each_builtin([](auto& to, const auto& from) { copy_to_host(to, from); }, p,
+                                *this);
     for (const auto& [name, f] : scalars_)
-      if (!snapshot_only || exported_.at(name)) fetch(p.scalar_field(name), f);
+      if (!snapshot_only || exported_.at(name)) copy_to_host(p.scalar_field(name), f);
     for (const auto& [name, f] : vectors_)
-      if (!snapshot_only || exported_.at(name)) fetch(p.vector_field(name), f);
+      if (!snapshot_only || exported_.at(name)) copy_to_host(p.vector_field(name), f);
   }
 
   std::map<std::string, vector<Real>> scalars_;

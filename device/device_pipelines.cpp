@@ -8,6 +8,7 @@
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
 #include "framework/world/world.h"
+#include "solvers/dem/dem_solver.h"
 #include "solvers/dfsph/dfsph_solver.h"
 #include "solvers/iisph/iisph_solver.h"
 #include "solvers/pcisph/pcisph_solver.h"
@@ -19,26 +20,23 @@ namespace upf {
 namespace {
 
 constexpr const char* kCovered =
-    "the device pipeline runs PCISPH, IISPH, DFSPH, WCSPH or SPH liquids with frozen walls and "
-    "rigid bodies so far (no grains yet); run this scene with --device cpu";
+    "the device pipeline runs the PCISPH, IISPH, DFSPH, WCSPH, SPH and DEM solvers with frozen "
+    "walls and bodies; run this scene with --device cpu";
 
-// The world's fluid solver when the pipeline covers the scene, else an InputError saying why.
-[[maybe_unused]] const Solver& covered_solver(const World& world, const std::string& where) {
-  const auto& solvers = world.solvers();
-  if (solvers.size() != 1 ||
-      (solvers.front()->name() != "pcisph" && solvers.front()->name() != "wcsph" &&
-       solvers.front()->name() != "sph" && solvers.front()->name() != "iisph" &&
-       solvers.front()->name() != "dfsph")) {
-    std::string names;
-    for (const auto& s : solvers) names += (names.empty() ? "" : ", ") + std::string(s->name());
-    throw InputError(where, "the scene's solvers are " + names + ": " + kCovered);
-  }
-  const Particles& p = world.particles();
-  for (ParticleType t : {ParticleType::Granular})
-    if (p.count(t) > 0)
-      throw InputError(where,
-                       "the scene has " + std::string(to_string(t)) + " particles: " + kCovered);
-  return *solvers.front();
+bool is_covered(const Solver& s) {
+  return dynamic_cast<const PcisphSolver*>(&s) || dynamic_cast<const IisphSolver*>(&s) ||
+         dynamic_cast<const DfsphSolver*>(&s) || dynamic_cast<const SphSolver*>(&s) ||
+         dynamic_cast<const WcsphSolver*>(&s) || dynamic_cast<const DemSolver*>(&s);
+}
+
+// Throws an InputError naming the first solver the pipeline does not run.
+void check_covered(const World& world, const std::string& where) {
+  for (const auto& s : world.solvers())
+    if (!is_covered(*s))
+      throw InputError(where, "the scene's solver '" + std::string(s->name()) +
+                                  "' has no device "
+                                  "part: " +
+                                  kCovered);
 }
 
 [[maybe_unused]] device::FluidSetup fluid_setup(const World& world, const Solver& solver,
@@ -50,31 +48,34 @@ constexpr const char* kCovered =
   setup.owns.resize(world.materials().size());
   for (std::size_t m = 0; m < setup.owns.size(); ++m)
     setup.owns[m] = fluid.owned.owns(MaterialId(m)) ? 1 : 0;
-  setup.gravity = world.settings().gravity;
-  setup.support_radius = world.settings().support_radius();
-  setup.reorder_every = world.settings().reorder_every;
   setup.reactions = fluid.reaction_list >= 0;
-  setup.threads = world.executor().threads();
   setup.stages = solver.stages();
   return setup;
 }
 
-// The pipeline of the world's solver on the backend `Make` names.
-template <class Make>
-std::unique_ptr<DevicePipeline> make_for(const World& world, const Solver& solver, Make&& make) {
+// The setup of one covered solver.
+[[maybe_unused]] device::SolverSetup solver_setup(const World& world, Solver& solver) {
+  if (auto* dem = dynamic_cast<DemSolver*>(&solver)) {
+    device::DemSolverSetup setup;
+    setup.step = dem->step_setup(world);
+    setup.stages = dem->stages();
+    setup.load_springs = [dem] { return dem->spring_state(); };
+    setup.store_springs = [dem](const DemSpringState& s) { dem->set_spring_state(s); };
+    return setup;
+  }
   if (const auto* pcisph = dynamic_cast<const PcisphSolver*>(&solver)) {
     device::PcisphSetup method;
     method.loop = pcisph->loop_settings();
     method.stop_percentile = pcisph->stop_percentile();
     method.predicted_density = PcisphSolver::kPredictedDensity;
     method.predicted_position = PcisphSolver::kPredictedPosition;
-    return make(fluid_setup(world, solver, pcisph->fluid_state()), std::move(method));
+    return device::FluidSolverSetup{fluid_setup(world, solver, pcisph->fluid_state()), method};
   }
   if (const auto* iisph = dynamic_cast<const IisphSolver*>(&solver)) {
     device::IisphSetup method;
     method.solve = iisph->settings();
     method.stop_percentile = iisph->stop_percentile();
-    return make(fluid_setup(world, solver, iisph->fluid_state()), std::move(method));
+    return device::FluidSolverSetup{fluid_setup(world, solver, iisph->fluid_state()), method};
   }
   if (const auto* dfsph = dynamic_cast<const DfsphSolver*>(&solver)) {
     device::DfsphSetup method;
@@ -82,32 +83,66 @@ std::unique_ptr<DevicePipeline> make_for(const World& world, const Solver& solve
     method.stop_percentile = dfsph->stop_percentile();
     method.density_stiffness = DfsphSolver::kDensityStiffness;
     method.divergence_stiffness = DfsphSolver::kDivergenceStiffness;
-    return make(fluid_setup(world, solver, dfsph->fluid_state()), std::move(method));
+    return device::FluidSolverSetup{fluid_setup(world, solver, dfsph->fluid_state()), method};
   }
   if (const auto* sph = dynamic_cast<const SphSolver*>(&solver)) {
     device::SphSetup method;
     method.kernels = sph->kernel_choice(world.settings().support_radius());
     method.stiffness = sph->stiffness();
     method.mu = sph->paper_viscosity();
-    return make(fluid_setup(world, solver, sph->fluid_state()), std::move(method));
+    return device::FluidSolverSetup{fluid_setup(world, solver, sph->fluid_state()), method};
   }
   const auto& wcsph = dynamic_cast<const WcsphSolver&>(solver);
   device::WcsphSetup method;
   method.tait_factor = wcsph.tait_factors();
   method.artificial_viscosity =
       wcsph.artificial_viscosity_factor(world.settings().support_radius());
-  return make(fluid_setup(world, solver, wcsph.fluid_state()), std::move(method));
+  return device::FluidSolverSetup{fluid_setup(world, solver, wcsph.fluid_state()), method};
+}
+
+// The setup of a world whose solvers are all covered (check_covered), in its stepping order.
+[[maybe_unused]] device::PipelineSetup pipeline_setup(const World& world) {
+  device::PipelineSetup setup;
+  setup.world.gravity = world.settings().gravity;
+  setup.world.support_radius = world.settings().support_radius();
+  setup.world.reorder_every = world.settings().reorder_every;
+  setup.world.threads = world.executor().threads();
+  setup.world.boundary_force = world.coupling().active(CouplingArray::BoundaryForce);
+  setup.world.liquid_force = world.coupling().active(CouplingArray::LiquidForce);
+  for (const auto& s : world.solvers()) setup.solvers.push_back(solver_setup(world, *s));
+  return setup;
 }
 
 }  // namespace
 
-std::size_t estimated_device_bytes(std::size_t particles, std::size_t liquid) {
-  // Per particle: the arrays and PCISPH's fields twice (state and last good state, 67 B each),
-  // the grid (57 B), the per-step buffers (44 B) and list offsets (8 B). Per liquid particle:
-  // about 40 fluid and 10 boundary neighbours at h = 2 s, 4 B each; kernel gradients are
-  // recomputed, not stored (FluidGradients). device_bytes() on the dam break at 28,896 liquid
-  // particles (62,448 in all) measured 334 B per particle where this says 335.
-  return particles * (2 * 67 + 57 + 44 + 8) + liquid * (50 * 4);
+std::size_t estimated_device_bytes(const World& world) {
+  // The particles' arrays and fields twice (the state and the last good state), as large as the
+  // host's. Per particle besides: the grid (62 B), each active coupling array (12 B), the fluid
+  // solvers' step buffers (40 B) and, with bodies, their per-particle buffers (70 B). Per
+  // neighbour list: offsets and entries, 4 B each, as many as the world's own lists hold (built by
+  // prepare() with the device's requests; kernel gradients are recomputed, not stored). Per
+  // grain: the contact list and the step's buffers, about 1,500 B at a grain diameter of 0.6
+  // spacings (samples/sand_into_water.json). docs/device.md compares it with device_bytes().
+  const Particles& p = world.particles();
+  const std::size_t n = p.size();
+  std::size_t arrays = 0;
+  Particles::for_each_builtin([&](const auto& a) { arrays += a.size() * sizeof(a[0]); }, p);
+  for (const auto& [name, f] : p.scalar_fields()) arrays += f.values.size() * sizeof(Real);
+  for (const auto& [name, f] : p.vector_fields()) arrays += f.values.size() * sizeof(Vec3);
+  std::size_t per_particle = 62;
+  for (CouplingArray a : {CouplingArray::BoundaryForce, CouplingArray::LiquidForce})
+    per_particle += world.coupling().active(a) ? 12 : 0;
+  per_particle += p.count(ParticleType::Liquid) > 0 ? 40 : 0;
+  per_particle += world.body_systems().empty() ? 0 : 70;
+  std::size_t lists = 0;
+  for (int h = 0; h < world.neighbour_list_count(); ++h)
+    lists += 4 * (n + 1 + world.neighbours(h).total());
+  const std::size_t estimate =
+      2 * arrays + n * per_particle + lists + p.count(ParticleType::Granular) * 1500;
+  // device_bytes() / this, before the margin: 1.11 (the dam break), 1.06 (floating objects), 0.97
+  // (sand into water), 0.67 (the sand pile, whose grains are larger); the margin keeps a refusal
+  // on the safe side.
+  return estimate / 100 * 115;
 }
 
 double copy_bandwidth_gbps(std::string_view device, std::size_t bytes) {
@@ -146,7 +181,7 @@ void check_device(std::string_view name, const World& world, const std::string& 
     throw InputError(where,
                      "'" + std::string(name) + "' is not a device (allowed: " + allowed + ")");
   }
-  if (name != "cpu") covered_solver(world, where);
+  if (name != "cpu") check_covered(world, where);
 }
 
 std::unique_ptr<DevicePipeline> make_device_pipeline(std::string_view name, const World& world,
@@ -154,9 +189,8 @@ std::unique_ptr<DevicePipeline> make_device_pipeline(std::string_view name, cons
   if (name == "cpu") return nullptr;
   if (name == "omp") {
 #ifdef UPF_HAVE_DEVICE_OMP
-    return make_for(world, covered_solver(world, where), [](auto fluid, auto method) {
-      return device::make_omp_pipeline(std::move(fluid), std::move(method));
-    });
+    check_covered(world, where);
+    return device::make_omp_pipeline(pipeline_setup(world));
 #else
     throw InputError(where,
                      "'omp': this build has no device pipeline on OpenMP (it needs Thrust, "
@@ -165,12 +199,12 @@ std::unique_ptr<DevicePipeline> make_device_pipeline(std::string_view name, cons
   }
   if (name == "cuda") {
 #ifdef UPF_HAVE_DEVICE_CUDA
-    const Solver& solver = covered_solver(world, where);
+    check_covered(world, where);
     const std::string why = device::cuda_unavailable_reason();
     if (!why.empty()) throw InputError(where, "'cuda': no usable GPU (" + why + ")");
     // Out of memory is said before the first step, with what it would take.
     const Particles& p = world.particles();
-    const std::size_t need = estimated_device_bytes(p.size(), p.count(ParticleType::Liquid));
+    const std::size_t need = estimated_device_bytes(world);
     std::size_t free = 0, total = 0;
     device::cuda_memory(free, total);
     if (need > free) {
@@ -182,9 +216,7 @@ std::unique_ptr<DevicePipeline> make_device_pipeline(std::string_view name, cons
                     double(total) / 1073741824.0);
       throw InputError(where, text);
     }
-    return make_for(world, solver, [](auto fluid, auto method) {
-      return device::make_cuda_pipeline(std::move(fluid), std::move(method));
-    });
+    return device::make_cuda_pipeline(pipeline_setup(world));
 #else
     throw InputError(where, "'cuda': this build has no CUDA pipeline (built without nvcc)");
 #endif

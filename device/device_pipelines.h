@@ -6,9 +6,9 @@
 //         without a GPU, and what every CI run tests
 //   cuda  the device pipeline on an NVIDIA GPU (sm_80, sm_90)
 //
-// The pipeline covers PCISPH, IISPH, DFSPH, WCSPH and SPH liquids with frozen walls and bodies so
-// far (not grains); another
-// scene, a backend this build lacks, or no usable GPU is an InputError that says which.
+// The pipeline runs the PCISPH, IISPH, DFSPH, WCSPH, SPH and DEM solvers, in any mix, with frozen
+// walls and bodies; a scene with another solver (a plug-in's), a backend this build lacks, or no
+// usable GPU is an InputError that says which.
 #pragma once
 
 #include <cstddef>
@@ -23,9 +23,9 @@ namespace upf {
 
 class World;
 
-// Device memory the pipeline needs for a world of `particles`, `liquid` of them liquid: checked
-// against the GPU's free memory before a CUDA run starts.
-std::size_t estimated_device_bytes(std::size_t particles, std::size_t liquid);
+// Device memory the pipeline needs for a prepared world: checked against the GPU's free memory
+// before a CUDA run starts.
+std::size_t estimated_device_bytes(const World& world);
 
 // Copy bandwidth of `device`'s memory (bytes read plus written per second, in GB/s) over a buffer
 // of `bytes`: cudaMemcpy device to device for "cuda", memcpy in host memory otherwise. The

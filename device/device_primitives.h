@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
+#include <thrust/copy.h>
 #include <thrust/for_each.h>
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/transform_reduce.h>
@@ -24,6 +26,18 @@ T* raw(Vector& v) {
 template <class T, class Vector>
 const T* raw(const Vector& v) {
   return thrust::raw_pointer_cast(v.data());
+}
+
+// A host vector into a backend's vector, resized to fit; and back.
+template <class DeviceVector, class T>
+void copy_to_device(DeviceVector& to, const std::vector<T>& from) {
+  to.resize(from.size());
+  thrust::copy(from.begin(), from.end(), to.begin());
+}
+template <class T, class DeviceVector>
+void copy_to_host(std::vector<T>& to, const DeviceVector& from) {
+  to.resize(from.size());
+  thrust::copy(from.begin(), from.end(), to.begin());
 }
 
 // Device memory a buffer holds.

@@ -1,4 +1,4 @@
-// DFSPH's stages (Bender & Koschier 2015, 2017) in the device pipeline (fluid_pipeline.h): the
+// DFSPH's stages (Bender & Koschier 2015, 2017) in the device pipeline (fluid_part.h): the
 // shared step of dfsph_steps.h with the stopping error computed on the device (stopping_error.h).
 // It has a fourth stage, "divergence", and its own integration (v = v*, x += dt v): the pipeline
 // asks for both through kDivergenceStage and kOwnIntegration.

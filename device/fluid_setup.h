@@ -15,19 +15,15 @@
 
 namespace upf::device {
 
-// The world's settings and FluidSolverState's constants.
+// FluidSolverState's constants.
 struct FluidSetup {
   // Per material: FluidMaterialTable's constants and whether the solver moves it.
   std::vector<Real> rest_density, viscosity, boundary_viscosity;
   std::vector<std::uint8_t> owns;
-  Vec3 gravity{};
-  Real support_radius = 0;
-  int reorder_every = 0;
   bool reactions = false;  // rigid particles whose reactions a body system sums
   // Keep grad W_ij per fluid pair (12 B a pair, as the CPU path does) instead of recomputing it
   // where used: the same bits either way (FluidGradients).
   bool store_gradients = false;
-  int threads = 0;
   std::vector<std::string> stages;  // the solver's stage names, for the metrics
   std::string density = "density", pressure = "pressure";  // the exported fields
 };

@@ -1,4 +1,4 @@
-// IISPH's pressure stage (Ihmsen et al. 2014) in the device pipeline (fluid_pipeline.h): the
+// IISPH's pressure stage (Ihmsen et al. 2014) in the device pipeline (fluid_part.h): the
 // diagonal and boundary divergence after the shared forces, then the relaxed Jacobi solve
 // (iisph_solve.h, what IisphSolver runs) with the stopping error computed on the device
 // (stopping_error.h). Its work arrays live here; the pressure field, the warm start of the next

@@ -1,4 +1,4 @@
-// The stage layout of a pressure method in the device pipeline (fluid_pipeline.h). Most methods
+// The stage layout of a pressure method in the device pipeline (fluid_part.h). Most methods
 // run "non_pressure", "pressure" and "integration" with symplectic Euler over a_other +
 // a_pressure, and derive from ThreeStageMethod; one with a "divergence" stage between
 // "non_pressure" and "pressure", or with its own integration (DFSPH), sets the flags itself.

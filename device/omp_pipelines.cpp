@@ -5,15 +5,8 @@
 
 namespace upf::device {
 
-template <class Setup>
-std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup fluid, Setup method) {
-  return make_pipeline<OmpBackend>(std::move(fluid), std::move(method));
+std::unique_ptr<DevicePipeline> make_omp_pipeline(const PipelineSetup& setup) {
+  return make_pipeline<OmpBackend>(setup);
 }
-
-template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, PcisphSetup);
-template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, IisphSetup);
-template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, DfsphSetup);
-template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, WcsphSetup);
-template std::unique_ptr<DevicePipeline> make_omp_pipeline(FluidSetup, SphSetup);
 
 }  // namespace upf::device

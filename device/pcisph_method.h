@@ -1,4 +1,4 @@
-// PCISPH's pressure stage (Solenthaler & Pajarola 2009) in the device pipeline (fluid_pipeline.h):
+// PCISPH's pressure stage (Solenthaler & Pajarola 2009) in the device pipeline (fluid_part.h):
 // the positions of the particles it does not move predicted once, then the shared correction loop
 // (pcisph_correction_loop.h) with the stopping error computed on the device (stopping_error.h).
 #pragma once

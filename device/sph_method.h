@@ -1,4 +1,4 @@
-// SPH's pressure stage (Müller et al. 2003) in the device pipeline (fluid_pipeline.h): its own
+// SPH's pressure stage (Müller et al. 2003) in the device pipeline (fluid_part.h): its own
 // density and viscosity after the shared forces, then p = k (rho - rho0) and the pressure force
 // (sph_steps.h, what SphSolver runs), and EquationOfStateSolver's statistics.
 #pragma once

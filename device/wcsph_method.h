@@ -1,4 +1,4 @@
-// WCSPH's pressure stage (Becker & Teschner 2007) in the device pipeline (fluid_pipeline.h): the
+// WCSPH's pressure stage (Becker & Teschner 2007) in the device pipeline (fluid_part.h): the
 // artificial viscosity after the shared forces, then Tait pressures and pressure accelerations
 // (wcsph_steps.h, what WcsphSolver runs), and EquationOfStateSolver's statistics.
 #pragma once

@@ -63,6 +63,12 @@ class DevicePipeline {
   virtual void download_last_good(Particles& into) const = 0;
   // max |v|^2 over liquid particles, for the solvers' CFL limits.
   virtual Real max_liquid_speed_squared() const = 0;
+  // max |v|^2 over the particles of `type` and of the materials m with materials[m] != 0.
+  virtual Real max_speed_squared(ParticleType type,
+                                 const std::vector<std::uint8_t>& materials) const = 0;
+  // The solvers' state that lives on the device between steps (DEM's springs) into the host's
+  // solvers, which take it back at the next upload: with download, for checkpoints.
+  virtual void download_solver_states() const = 0;
   // The metrics' kinetic energy, the same bits as on the host (kinetic_energy.h).
   virtual double kinetic_energy() const = 0;
   // Particles of `type` (types do not change while the device steps).

@@ -193,6 +193,9 @@ void World::set_device(std::unique_ptr<DevicePipeline> pipeline) {
 void World::sync_host() const {
   if (!device_ || !host_stale_) return;
   device_->download(particles_);
+  // The solvers' own state (DEM's springs) comes with the particles: a checkpoint, or an upload
+  // after a host edit, then finds the host's solvers current.
+  device_->download_solver_states();
   host_stale_ = false;
 }
 
@@ -225,6 +228,7 @@ void World::step_on_device(double dt) {
   report_ = StepReport{};
   report_.dt = dt;
   device_->step(step_count_, dt, report_);
+  host_stale_ = true;  // also when a body system's host edit synced it earlier in this step
   Stopwatch body_watch;
   for (auto& b : bodies_) b->advance(*this, dt);
   if (!bodies_.empty()) report_.stage_ms.emplace_back("bodies", body_watch.elapsed_ms());
@@ -271,6 +275,33 @@ struct BrokenParticle {
   }
 };
 }  // namespace
+
+namespace {
+// |v_i|^2 of a particle of one type and of one of the flagged materials, 0 for the others.
+struct SpeedSquaredOf {
+  const Vec3* v;
+  const ParticleType* type;
+  const MaterialId* material;
+  ParticleType of;
+  const std::uint8_t* flags;
+  std::size_t count;
+  Real operator()(std::uint32_t i) const {
+    return type[i] == of && material[i] < count && flags[material[i]] != 0 ? squared_norm(v[i])
+                                                                           : Real(0);
+  }
+};
+}  // namespace
+
+Real World::max_speed_squared(ParticleType type, const std::uint8_t* material_flags,
+                              std::size_t material_count) const {
+  if (device_ && !device_stale_)
+    return device_->max_speed_squared(
+        type, std::vector<std::uint8_t>(material_flags, material_flags + material_count));
+  return executor_.max_of(
+      all_particles(particles_.size()),
+      SpeedSquaredOf{particles_.velocity.data(), particles_.type.data(), particles_.material.data(),
+                     type, material_flags, material_count});
+}
 
 Real World::max_liquid_speed_squared() const {
   if (device_ && !device_stale_) return device_->max_liquid_speed_squared();

@@ -69,6 +69,9 @@ class World {
   // handle for neighbours().
   int request_neighbours(TypeMask query, TypeMask target, Real radius = 0);
   const NeighbourList& neighbours(int handle) const { return lists_.at(std::size_t(handle)).list; }
+  int neighbour_list_count() const { return int(lists_.size()); }
+  // The radius a request got (capped at the support radius).
+  Real neighbour_radius(int handle) const { return lists_.at(std::size_t(handle)).radius; }
   const NeighbourGrid& grid() const { return grid_; }
 
   // Steps on `pipeline` from now on (device/device_pipelines.h makes them), or on the CPU again
@@ -80,6 +83,10 @@ class World {
   DevicePipeline* device() { return device_.get(); }
   // max |v|^2 over liquid particles, wherever they are (the solvers' CFL limits).
   Real max_liquid_speed_squared() const;
+  // max |v|^2 over the particles of `type` whose material m has material_flags[m] != 0 (m below
+  // material_count), wherever they are: a solver's time-step limit (DEM's list skin).
+  Real max_speed_squared(ParticleType type, const std::uint8_t* material_flags,
+                         std::size_t material_count) const;
   // The metrics' kinetic energy (kinetic_energy.h) and particle counts, wherever the particles are.
   double kinetic_energy() const;
   std::size_t count(ParticleType type) const;

@@ -102,4 +102,19 @@ void DemContactList::restore_state(StateReader& in) {
   in.expect(fits, "the DEM contact springs");
 }
 
+void DemContactList::springs_into(DemSpringState& state) const {
+  state.key = key_;
+  state.xi = xi_;
+  state.begin_by_id = last_begin_by_id_;
+  state.count_by_id = last_count_by_id_;
+}
+
+void DemContactList::set_springs(const DemSpringState& state) {
+  *this = DemContactList{};
+  key_ = state.key;
+  xi_ = state.xi;
+  last_begin_by_id_ = state.begin_by_id;
+  last_count_by_id_ = state.count_by_id;
+}
+
 }  // namespace upf

@@ -26,6 +26,7 @@
 #include "framework/particles/particles.h"
 #include "framework/world/container_box.h"
 #include "solvers/dem/dem_contact_stages.h"
+#include "solvers/dem/dem_spring_state.h"
 #include "solvers/dem/dem_views.h"
 #include "solvers/fluid/owned_particles.h"
 
@@ -92,6 +93,9 @@ class DemContactList {
   // Checkpoints: the springs and whose they are (the candidates are listed again next step).
   void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
+  // The same state as plain vectors (`primed` is the solver's): for a device pipeline.
+  void springs_into(DemSpringState& state) const;
+  void set_springs(const DemSpringState& state);
 
  private:
   void carry_springs(const Particles& particles, const OwnedParticles& owned,

@@ -78,14 +78,52 @@ void DemSolver::prepare(World& world) {
 
 Real DemSolver::max_time_step(const World& world) const {
   // Over a world step a pair may close in by at most the lists' skin: each grain moves at most
-  // half of it.
-  const Particles& p = world.particles();
-  Real fastest = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.type[i] == ParticleType::Granular && owned_.owns(p.material[i]))
-      fastest = std::max(fastest, norm(p.velocity[i]));
+  // half of it. Through the world: with a device pipeline it is a reduction there.
+  const OwnedMaterials owns = owned_.materials();
+  const Real fastest =
+      std::sqrt(world.max_speed_squared(ParticleType::Granular, owns.flags, owns.count));
   if (fastest <= 0) return std::numeric_limits<Real>::max();
   return Real(0.5) * skin_ / fastest;
+}
+
+DemStepSetup DemSolver::step_setup(const World& world) const {
+  DemStepSetup s;
+  s.model = model_;
+  const DemPairTable table = pairs_->table();
+  s.materials = table.n;
+  s.pairs.assign(table.pairs, table.pairs + table.n * table.n);
+  s.walls.assign(table.walls, table.walls + table.n);
+  s.boundary.assign(table.boundary, table.boundary + table.n);
+  s.boundary_radius = table.boundary_radius;
+  const OwnedMaterials owns = owned_.materials();
+  s.owns.assign(owns.flags, owns.flags + owns.count);
+  s.boxes = world.containers();
+  s.gravity = world.settings().gravity;
+  s.substep = substep_;
+  s.skin = skin_;
+  s.list_radius = world.neighbour_radius(grains_list_);
+  s.reactions = reaction_list_ >= 0;
+  s.liquid = grain_liquid_list_ >= 0;
+  s.liquid_force = s.liquid && world.coupling().active(CouplingArray::LiquidForce);
+  s.liquid_density = liquid_density_;
+  s.liquid_viscosity = liquid_viscosity_;
+  s.radius = kRadiusField;
+  s.angular_velocity = kAngularVelocityField;
+  s.force = kForceField;
+  s.torque = kTorqueField;
+  return s;
+}
+
+DemSpringState DemSolver::spring_state() const {
+  DemSpringState state;
+  state.primed = primed_;
+  contacts_.springs_into(state);
+  return state;
+}
+
+void DemSolver::set_spring_state(const DemSpringState& state) {
+  primed_ = state.primed;
+  contacts_.set_springs(state);
 }
 
 std::vector<std::string> DemSolver::stages() const {

@@ -30,6 +30,8 @@
 #include "solvers/dem/dem_contact_list.h"
 #include "solvers/dem/dem_fluid_drag.h"
 #include "solvers/dem/dem_pairs.h"
+#include "solvers/dem/dem_spring_state.h"
+#include "solvers/dem/dem_step_setup.h"
 #include "solvers/dem/dem_steps.h"
 #include "solvers/fluid/owned_particles.h"
 
@@ -62,6 +64,11 @@ class DemSolver : public Solver {
 
   // The longest sub-step the materials allow, s.
   Real substep() const { return substep_; }
+  // The step's constants as plain values, for a device pipeline (after prepare).
+  DemStepSetup step_setup(const World& world) const;
+  // The springs carried between steps, for a device pipeline that takes the step over.
+  DemSpringState spring_state() const;
+  void set_spring_state(const DemSpringState& state);
 
  private:
   void interpolate_fluid(World& world);

@@ -65,11 +65,9 @@ TEST_F(DeviceCli, TheScenesDeviceKeyIsUsedAndCheckedUnlessTheOptionOverridesIt) 
   EXPECT_NE(validated.output.find("bad.json:/device"), std::string::npos) << validated.output;
   EXPECT_NE(validated.output.find("allowed: cpu"), std::string::npos) << validated.output;
   doc["device"] = "omp";
-  // Grains are not on the device yet.
-  doc["materials"]["sand"] = {{"type", "granular"}, {"density", 2600}, {"solver", "dem_linear"}};
-  doc["granular_blocks"] = {
-      {{"material", "sand"}, {"min", {1.0, 0.0, 0.1}}, {"max", {1.2, 0.2, 0.3}}}};
-  const Result uncovered = run_upf("validate " + write(doc, "grains.json"));
+  // The PBF plug-in has no device part.
+  doc["materials"]["water"]["solver"] = "pbf";
+  const Result uncovered = run_upf("validate " + write(doc, "pbf.json"));
   EXPECT_EQ(uncovered.code, 2) << uncovered.output;
   EXPECT_NE(uncovered.output.find("--device cpu"), std::string::npos) << uncovered.output;
   const Result refused = run_upf("run " + bad + " -q --end 0.05 --out " + (dir_ / "bad").string());
@@ -90,15 +88,12 @@ TEST_F(DeviceCli, ADeviceThatCannotRunRefusesBeforeWritingAnything) {
       << unknown.output;
   EXPECT_FALSE(fs::exists(out));
 
-  auto with_grains = sample();
-  with_grains["materials"]["sand"] = {
-      {"type", "granular"}, {"density", 2600}, {"radius", 0.02}, {"solver", "dem_linear"}};
-  with_grains["granular_blocks"] = {
-      {{"material", "sand"}, {"min", {1.0, 0.2, 0.1}}, {"max", {1.2, 0.4, 0.3}}}};
-  const Result grains =
-      run_upf("run " + write(with_grains, "grains.json") + " --device omp --out " + out.string());
-  EXPECT_EQ(grains.code, 2) << grains.output;
-  EXPECT_NE(grains.output.find("--device cpu"), std::string::npos) << grains.output;
+  auto with_pbf = sample();
+  with_pbf["materials"]["water"]["solver"] = "pbf";
+  const Result pbf =
+      run_upf("run " + write(with_pbf, "pbf.json") + " --device omp --out " + out.string());
+  EXPECT_EQ(pbf.code, 2) << pbf.output;
+  EXPECT_NE(pbf.output.find("'pbf' has no device part"), std::string::npos) << pbf.output;
   EXPECT_FALSE(fs::exists(out));
 
   // Without a GPU (CI never has one) the CUDA runtime's reason is named; with one, it runs.

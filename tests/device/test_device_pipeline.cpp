@@ -1,13 +1,14 @@
 // The device pipeline on Thrust's OpenMP system ("--device omp") against the CPU executor: the
-// same scene stepped both ways (PCISPH, IISPH, DFSPH, WCSPH, SPH; walls, dynamic and kinematic
-// bodies) gives bitwise identical particles (positions, velocities, density, pressure, every
-// field), bodies (pose, velocity, fluid force and torque), step statistics and checkpoints, for
-// 1 and 2 threads (DESIGN.md, "Determinism": the device pipeline's CPU instantiation is bitwise the
-// CPU path). Reference: the CPU path, whose physics tests/physics checks against analytic and
-// experimental references.
+// same scene stepped both ways (PCISPH, IISPH, DFSPH, WCSPH, SPH, DEM linear and Hertz; walls,
+// dynamic and kinematic bodies; grains in water) gives bitwise identical particles (positions,
+// velocities, density, pressure, every field), bodies (pose, velocity, fluid force and torque),
+// step statistics and checkpoints, for 1 and 2 threads (DESIGN.md, "Determinism": the device
+// pipeline's CPU instantiation is bitwise the CPU path). Reference: the CPU path, whose physics
+// tests/physics checks against analytic and experimental references.
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -123,9 +124,9 @@ std::size_t expect_parity(const nlohmann::json& doc, int steps) {
     EXPECT_EQ(cpu.dts, omp.dts);
     EXPECT_EQ(cpu.tw.world->time(), omp.tw.world->time());
     // The run must have moved: a frozen world would pass trivially.
-    EXPECT_GT(testing::bitwise_differences(testing::state_by_id(cpu.tw.world->particles()), initial,
-                                           true),
-              cpu.tw.world->particles().count(ParticleType::Liquid) / 2);
+    const Particles& p = cpu.tw.world->particles();
+    EXPECT_GT(testing::bitwise_differences(testing::state_by_id(p), initial, true),
+              (p.count(ParticleType::Liquid) + p.count(ParticleType::Granular)) / 2);
   }
   return guarded;
 }
@@ -260,15 +261,87 @@ TEST(DevicePipelineOmp, UnstableRunNamesTheParticleAndKeepsTheLastGoodState) {
   }
 }
 
+// The sand pile's collapse (samples/sand_pile.json): grain-grain and grain-wall contacts with
+// their springs carried from step to step, linear and Hertz.
+TEST(DevicePipelineOmp, SandPileIsBitwiseTheCpuPath) {
+  auto doc = testing::load_sample_json("sand_pile.json");
+  expect_parity(doc, 60);
+  doc["materials"]["sand"]["solver"] = "dem_hertz";
+  doc["materials"]["sand"]["youngs_modulus"] = 5e6;
+  doc["materials"]["sand"]["poisson_ratio"] = 0.3;
+  expect_parity(doc, 25);
+}
+
+// Sand poured onto a floating box and into the pool around it (samples/sand_into_water.json,
+// coarser): DEM, PCISPH and Bullet in one step; grain-body contacts push the box through
+// boundary_force, drag and buoyancy push the water through liquid_force.
+TEST(DevicePipelineOmp, SandIntoWaterWithABodyIsBitwiseTheCpuPath) {
+  auto doc = testing::load_sample_json("sand_into_water.json");
+  doc["particle_spacing"] = 0.03;
+  doc["granular_blocks"] = {
+      {{"material", "sand"}, {"min", {0.14, 0.42, 0.14}}, {"max", {0.26, 0.5, 0.26}}},
+      {{"material", "sand"}, {"min", {0.45, 0.32, 0.15}}, {"max", {0.55, 0.38, 0.25}}}};
+  for (auto& body : doc["bodies"]) {
+    const std::string file = body["mesh"]["file"];
+    body["mesh"]["file"] = testing::kTestMeshes + file.substr(file.rfind('/') + 1);
+  }
+  expect_parity(doc, 100);
+  // Both couplings acted: grains went under the surface (y = 0.3 m) and some rest on the box.
+  Stepped cpu = start(doc, 2, "cpu");
+  step(cpu, 100);
+  const Particles& p = cpu.tw.world->particles();
+  std::size_t wet = 0, on_box = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.type[i] != ParticleType::Granular) continue;
+    wet += p.position[i].y < Real(0.28);
+    on_box +=
+        p.position[i].x > Real(0.14) && p.position[i].x < Real(0.26) && p.position[i].y > Real(0.3);
+  }
+  EXPECT_GT(wet, 50u);
+  EXPECT_GT(on_box, 50u);
+}
+
+// Checkpoints carry DEM's springs: the device's reach the host solver when the state is saved,
+// and a restored world's go back up, so a resumed run continues bit for bit.
+TEST(DevicePipelineOmp, CheckpointsCarryTheDeviceSprings) {
+  const auto doc = testing::load_sample_json("sand_pile.json");
+  Stepped cpu = start(doc, 2, "cpu");
+  Stepped omp = start(doc, 2, "omp");
+  step(cpu, 30);
+  step(omp, 30);
+  StateWriter a, b;
+  cpu.tw.world->save_state(a);
+  omp.tw.world->save_state(b);
+  ASSERT_TRUE(a.bytes() == b.bytes()) << "checkpoints differ";
+  // A fresh device world resumed from the checkpoint.
+  Stepped resumed = start(doc, 2, "omp");
+  StateReader in(a.bytes(), "checkpoint");
+  resumed.tw.world->restore_state(in);
+  step(cpu, 30);
+  step(resumed, 30);
+  expect_identical(cpu.tw.world->particles(), resumed.tw.world->particles());
+}
+
+// A solver the pipeline has no part for.
+class IdleSolver : public Solver {
+ public:
+  std::string_view name() const override { return "idle"; }
+  void prepare(World&) override {}
+  Real max_time_step(const World&) const override { return Real(1); }
+  std::vector<std::string> stages() const override { return {}; }
+  void step(World&, Real, StageRunner&) override {}
+  SolverStats stats() const override { return {}; }
+};
+
 TEST(DevicePipeline, ScenesItDoesNotCoverAreRefusedWithTheReason) {
   {
-    auto sand = testing::load_sample_json("sand_pile.json");
-    sand["particle_spacing"] = 0.04;
-    testing::TestWorld tw(sand, 1);
+    testing::TestWorld tw(small_dam_break(), 1);
+    tw.world->add_solver(std::make_unique<IdleSolver>());
     try {
       make_device_pipeline("omp", *tw.world);
-      FAIL() << "grains accepted";
+      FAIL() << "a solver without a device part accepted";
     } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("'idle'"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("--device cpu"), std::string::npos) << e.what();
     }
   }

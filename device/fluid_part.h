@@ -1,0 +1,160 @@
+// A fluid solver's step in a device pipeline (solver_part.h), for any backend and any pressure
+// method (pcisph_method.h, wcsph_method.h, ...): FluidSolverState's shared stages around the
+// method's own, on device arrays. Its lists: liquid -> liquid and liquid -> boundary, and rigid
+// -> liquid when a body system takes the reactions. Stages "non_pressure" (shared forces, the
+// grains' reactions from liquid_force, then the method's own), optionally "divergence",
+// "pressure" (the method's) and "integration" (reactions on bodies, then symplectic Euler), timed
+// like the CPU's. Every stage is the struct the CPU solver runs, so the bits are the CPU's.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+#include "device/solver_part.h"
+#include "solvers/fluid/fluid_stages.h"
+
+namespace upf::device {
+
+// What a pressure method sees of a step: the view, the owned particles and the shared buffers.
+struct FluidStep {
+  FluidView f;
+  NeighbourView fluid_of_boundary;  // rigid -> liquid; null offsets: no reactions wanted
+  Vec3* boundary_force;             // the reactions on rigid particles
+  ParticleRange owned;
+  OwnedMaterials owns;
+  std::size_t n;  // all particles
+  Real dt;
+  Real* density;
+  Real* pressure;
+  FluidGradients fluid_gradient;
+  Vec3* boundary_gradient;
+  Vec3* other_acceleration;
+  Vec3* pressure_acceleration;
+};
+
+template <class Backend, class Method>
+class FluidPart final : public SolverPart<Backend> {
+  template <class T>
+  using vector = typename Backend::template vector<T>;
+
+ public:
+  FluidPart(FluidSetup setup, typename Method::Setup method, PipelineState<Backend>& state)
+      : setup_(std::move(setup)), method_(std::move(method)), stages_(setup_.stages) {
+    copy_to_device(rest_density_, setup_.rest_density);
+    copy_to_device(viscosity_, setup_.viscosity);
+    copy_to_device(boundary_viscosity_, setup_.boundary_viscosity);
+    copy_to_device(owns_, setup_.owns);
+    fluid_list_ = state.lists.request(kLiquidMask, kLiquidMask);
+    boundary_list_ = state.lists.request(kLiquidMask, kBoundaryMask);
+    if (setup_.reactions)
+      reaction_list_ = state.lists.request(mask_of(ParticleType::Rigid), kLiquidMask);
+  }
+
+  void bind(PipelineState<Backend>& state) override {
+    density_ = &state.particles.scalar_array(setup_.density);
+    pressure_ = &state.particles.scalar_array(setup_.pressure);
+    method_.bind(state.particles);
+  }
+
+  const StageRunner& stages() const override { return stages_; }
+  SolverStats stats() const override { return stats_; }
+
+  std::size_t bytes() const override {
+    return bytes_of(owned_) + bytes_of(fluid_gradient_) + bytes_of(boundary_gradient_) +
+           bytes_of(other_acceleration_) + bytes_of(pressure_acceleration_) + method_.bytes() +
+           bytes_of(rest_density_) + bytes_of(viscosity_) + bytes_of(boundary_viscosity_) +
+           bytes_of(owns_);
+  }
+
+  void step(PipelineState<Backend>& state, Real dt) override {
+    stages_.clear();
+    const std::size_t n = state.particles.size();
+    const DeviceExecutor<Backend> exec;
+    FluidStep step{};
+    step.n = n;
+    step.dt = dt;
+    step.density = raw<Real>(*density_);
+    step.pressure = raw<Real>(*pressure_);
+    step.owns = owned_materials();
+    if (reaction_list_ >= 0 && state.boundary_force_or_null()) {
+      step.fluid_of_boundary = state.lists.view(reaction_list_);
+      step.boundary_force = state.boundary_force_or_null();
+    }
+    Vec3* liquid_force = state.liquid_force_or_null();
+
+    stages_("non_pressure", [&] {
+      step.owned = indices_where<Backend>(
+          n, part_detail::OwnedIndex{raw<MaterialId>(state.particles.material), step.owns}, owned_);
+      // Recomputed where used unless the setup asks to store them (FluidGradients).
+      fluid_gradient_.resize(setup_.store_gradients ? state.lists.list(fluid_list_).total() : 0);
+      boundary_gradient_.resize(n);
+      other_acceleration_.resize(n);
+      pressure_acceleration_.resize(n);
+      step.f = fluid_view(state);
+      step.fluid_gradient =
+          setup_.store_gradients ? FluidGradients(raw<Vec3>(fluid_gradient_)) : FluidGradients();
+      step.boundary_gradient = raw<Vec3>(boundary_gradient_);
+      step.other_acceleration = raw<Vec3>(other_acceleration_);
+      step.pressure_acceleration = raw<Vec3>(pressure_acceleration_);
+      run_non_pressure_stages(exec, step.owned, step.f,
+                              {step.fluid_gradient, step.boundary_gradient, step.other_acceleration,
+                               step.density, liquid_force},
+                              state.world.gravity);
+      method_.non_pressure(exec, step);
+    });
+
+    if constexpr (Method::kDivergenceStage)
+      stages_("divergence", [&] { method_.divergence(exec, step); });
+
+    stages_("pressure", [&] { stats_ = method_.pressure(exec, step); });
+
+    stages_("integration", [&] {
+      if (step.boundary_force) method_.add_reactions(exec, step);
+      if constexpr (Method::kOwnIntegration) {
+        method_.integrate(exec, step, raw<Vec3>(state.particles.velocity),
+                          raw<Vec3>(state.particles.position));
+      } else {
+        run<Backend>(step.owned,
+                     SymplecticEulerStage{step.other_acceleration, step.pressure_acceleration, dt,
+                                          raw<Vec3>(state.particles.velocity),
+                                          raw<Vec3>(state.particles.position)});
+      }
+    });
+  }
+
+ private:
+  OwnedMaterials owned_materials() const { return {raw<std::uint8_t>(owns_), owns_.size()}; }
+
+  FluidView fluid_view(const PipelineState<Backend>& state) const {
+    const DeviceParticles<Backend>& p = state.particles;
+    FluidView f;
+    f.x = raw<Vec3>(p.position);
+    f.v = raw<Vec3>(p.velocity);
+    f.mass = raw<Real>(p.mass);
+    f.type = raw<ParticleType>(p.type);
+    f.material = raw<MaterialId>(p.material);
+    f.boundary_volume = raw<Real>(p.boundary_volume);
+    f.rest_density = raw<Real>(rest_density_);
+    f.viscosity = raw<Real>(viscosity_);
+    f.boundary_viscosity = raw<Real>(boundary_viscosity_);
+    f.fluid = state.lists.view(fluid_list_);
+    f.boundary = state.lists.view(boundary_list_);
+    f.kernel = CubicSplineKernel(state.world.support_radius);
+    return f;
+  }
+
+  FluidSetup setup_;
+  Method method_;
+  StageRunner stages_;
+  SolverStats stats_;
+  int fluid_list_ = -1, boundary_list_ = -1, reaction_list_ = -1;
+  vector<Real> rest_density_, viscosity_, boundary_viscosity_;
+  vector<std::uint8_t> owns_;
+  vector<std::uint32_t> owned_;
+  vector<Vec3> fluid_gradient_, boundary_gradient_, other_acceleration_, pressure_acceleration_;
+  vector<Real>* density_ = nullptr;
+  vector<Real>* pressure_ = nullptr;
+};
+
+}  // namespace upf::device
