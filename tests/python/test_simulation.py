@@ -289,6 +289,22 @@ def test_the_device_pipeline_steps_the_cpus_bits(source_dir):
     assert cpu.bodies()[0]["fluid_force"][1] > 0  # the crate reached the water
 
 
+def test_grains_on_the_device_pipeline_are_the_cpus_bits(source_dir):
+    # DEM on --device omp: contacts, springs and sub-steps give the CPU path's bits.
+    path = str(source_dir / "samples" / "sand_pile.json")
+    try:
+        omp = upf.Simulation.from_file(path, threads=2, device="omp")
+    except upf.SceneError as e:
+        pytest.skip(f"no device pipeline in this build: {e}")
+    cpu = upf.Simulation.from_file(path, threads=2)
+    omp.advance_to(0.1)
+    cpu.advance_to(0.1)
+    assert omp.step_count == cpu.step_count
+    for name in ("position", "velocity", "angular_velocity"):
+        assert np.array_equal(omp.copy(name), cpu.copy(name)), name
+    assert not np.array_equal(cpu.copy("velocity"), np.zeros_like(cpu.copy("velocity")))
+
+
 def test_a_device_that_cannot_run_the_scene_is_a_scene_error(source_dir):
     with pytest.raises(upf.SceneError, match="device"):
         upf.Simulation.from_dict(crate_scene(source_dir), device="gpu0")
