@@ -43,6 +43,7 @@ PythonRun run_python_script(const std::filesystem::path& script,
     failures += (failures.empty() ? "" : "; ") + why;
   }
   run.error = failures;
+  run.missing_module = true;
   return run;
 }
 

@@ -15,6 +15,9 @@ struct PythonRun {
   bool ok = false;
   std::string interpreter;  // the last one tried
   std::string error;        // why it did not succeed, for the user
+  // No interpreter could import what the script needs (each exited kPythonMissingModuleExit or
+  // did not start): the environment lacks a package, the script did not fail.
+  bool missing_module = false;
 };
 
 // Interpreters in the order they are tried: $UPF_PYTHON alone when set; otherwise python3 on
