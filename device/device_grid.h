@@ -168,8 +168,8 @@ struct CellNeighboursStage {
   }
 };
 
-// Up to two lists (one query set, two target sets) in one scan, as NeighbourGrid does.
-inline constexpr int kMaxLists = 2;
+// Up to four lists (one query set, four target sets) in one scan, as NeighbourGrid does.
+inline constexpr int kMaxLists = 4;
 struct ListRequest {
   TypeMask query;
   TypeMask target[kMaxLists];
@@ -200,7 +200,7 @@ struct CountStage {
   const ParticleType* type;
   std::uint32_t* count[kMaxLists];  // count[l][i + 1]
   UPF_HD void operator()(std::size_t i) const {
-    std::uint32_t c[kMaxLists] = {0, 0};
+    std::uint32_t c[kMaxLists] = {};
     if (type_in(r.query, type[i])) {
       auto visit = [&](int l, std::uint32_t) { ++c[l]; };
       for_each_neighbour(g, r, g.slot_of[i], visit);
@@ -217,7 +217,7 @@ struct FillStage {
   std::uint32_t* indices[kMaxLists];
   UPF_HD void operator()(std::size_t i) const {
     if (!type_in(r.query, type[i])) return;
-    std::uint32_t next[kMaxLists] = {0, 0};
+    std::uint32_t next[kMaxLists] = {};
     for (int l = 0; l < r.lists; ++l) next[l] = offsets[l][i];
     auto visit = [&](int l, std::uint32_t j) { indices[l][next[l]++] = j; };
     for_each_neighbour(g, r, g.slot_of[i], visit);
@@ -296,21 +296,21 @@ class DeviceGrid {
   }
 
   // For every particle whose type is in `query`, the others within `radius` whose type is in
-  // targets[l], into outs[l] (one or two lists), as NeighbourGrid::find_neighbours.
+  // targets[l], into outs[l] (up to kMaxLists), as NeighbourGrid::find_neighbours.
   void find_neighbours(const ParticleType* type, TypeMask query, const TypeMask* targets, int lists,
                        Real radius, DeviceNeighbourList<Backend>* const* outs) {
     using namespace grid_detail;
-    ListRequest request{query, {0, 0}, lists, radius * radius};
+    ListRequest request{query, {}, lists, radius * radius};
     for (int l = 0; l < lists; ++l) request.target[l] = targets[l];
     const GridView g = view();
-    CountStage count{g, request, type, {nullptr, nullptr}};
+    CountStage count{g, request, type, {}};
     for (int l = 0; l < lists; ++l) {
       outs[l]->offsets.resize(n_ + 1);
       outs[l]->offsets[0] = 0;
       count.count[l] = raw<std::uint32_t>(outs[l]->offsets);
     }
     for_each_index<Backend>(n_, count);
-    FillStage fill{g, request, type, {nullptr, nullptr}, {nullptr, nullptr}};
+    FillStage fill{g, request, type, {}, {}};
     for (int l = 0; l < lists; ++l) {
       auto& offsets = outs[l]->offsets;
       thrust::inclusive_scan(Backend::policy(), offsets.begin(), offsets.end(), offsets.begin());

@@ -35,11 +35,11 @@ class DeviceLists {
     std::vector<bool> done(requests_.size(), false);
     for (std::size_t a = 0; a < requests_.size(); ++a) {
       if (done[a]) continue;
-      // At most two targets per scan (the grid's CountStage).
-      TypeMask targets[2];
-      DeviceNeighbourList<Backend>* outs[2];
+      // At most kMaxLists targets per scan (the grid's CountStage).
+      TypeMask targets[grid_detail::kMaxLists];
+      DeviceNeighbourList<Backend>* outs[grid_detail::kMaxLists];
       int count = 0;
-      for (std::size_t b = a; b < requests_.size() && count < 2; ++b) {
+      for (std::size_t b = a; b < requests_.size() && count < grid_detail::kMaxLists; ++b) {
         if (done[b] || requests_[b].query != requests_[a].query ||
             requests_[b].radius != requests_[a].radius)
           continue;
@@ -48,7 +48,7 @@ class DeviceLists {
         outs[count] = &lists_[b];
         ++count;
       }
-      // A third target with the same query and radius is left for a later `a`: its own scan.
+      // Targets beyond kMaxLists with the same query and radius are left for a later `a`.
       grid.find_neighbours(type, requests_[a].query, targets, count, requests_[a].radius, outs);
     }
   }
