@@ -37,6 +37,10 @@ class Solver {
   // stages(); per-particle work goes to the executor as particle stages (particle_stage.h).
   virtual void step(World& world, Real dt, StageRunner& run) = 0;
   virtual SolverStats stats() const = 0;
+  // After every solver's prepare and the first neighbour lists: fills the exported fields of the
+  // initial state (a fluid's density) so that frame 0 shows real values. Must not change what
+  // the first step computes.
+  virtual void initialize_fields(World&) {}
   // Checkpoints (World::save_state): what the solver keeps from one step to the next outside the
   // particle fields, which the world saves itself. Stateless solvers keep the defaults.
   virtual void save_state(StateWriter&) const {}

@@ -88,6 +88,7 @@ void World::prepare() {
   particles_.seal_fields();
   prepared_ = true;
   update_neighbours();
+  for (auto& s : solvers_) s->initialize_fields(*this);
 }
 
 double World::next_time_step() const {

@@ -71,6 +71,7 @@ class PbfSolver final : public Solver {
 
   std::string_view name() const override { return "pbf"; }
   void prepare(World& world) override;
+  void initialize_fields(World& world) override { fluid_.initial_density(world); }
   Real max_time_step(const World& world) const override;
   std::vector<std::string> stages() const override;
   void step(World& world, Real dt, StageRunner& run) override;

@@ -21,6 +21,7 @@ class EquationOfStateSolver : public Solver {
       : materials_(std::move(materials)) {}
 
   void prepare(World& world) final;
+  void initialize_fields(World& world) override { fluid_.initial_density(world); }
   std::vector<std::string> stages() const final;
   void step(World& world, Real dt, StageRunner& run) final;
   SolverStats stats() const final { return stats_; }

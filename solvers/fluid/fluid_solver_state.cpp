@@ -31,6 +31,14 @@ FluidView FluidSolverState::begin_step(const World& world) {
   return make_fluid_view(world, table, lists);
 }
 
+void FluidSolverState::initial_density(World& world) {
+  const FluidView f = begin_step(world);
+  Real* density = world.particles()[density_field].data();
+  world.executor().run(owned.range(),
+                       DensityAndGradientsStage{f, FluidGradients(fluid_gradient.data()),
+                                                boundary_gradient.data(), density});
+}
+
 void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density) {
   const Vec3* liquid_force = world.coupling().active(CouplingArray::LiquidForce)
                                  ? world.coupling()[CouplingArray::LiquidForce].data()

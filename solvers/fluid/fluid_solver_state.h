@@ -45,6 +45,9 @@ struct FluidSolverState {
   void prepare(World& world, const std::vector<MaterialId>& materials);
   // Rebuilds the owned list, sizes the buffers for this step's lists; the current state's view.
   FluidView begin_step(const World& world);
+  // The density field of the owned particles at the current positions, nothing else: the initial
+  // state's (Solver::initialize_fields), which frame 0 shows.
+  void initial_density(World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
   void shared_forces(const World& world, const FluidView& f, Real* density);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array

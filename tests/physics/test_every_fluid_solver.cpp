@@ -12,6 +12,7 @@
 //                   liquid).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -65,7 +66,9 @@ bool liquid_near_walls(const Particles& p) {
 
 class EveryFluidSolver : public ::testing::TestWithParam<std::string> {
  protected:
-  TestWorld world_of(const nlohmann::json& doc) { return TestWorld(doc, 2, every_solver_registry()); }
+  TestWorld world_of(const nlohmann::json& doc) {
+    return TestWorld(doc, 2, every_solver_registry());
+  }
 };
 
 // Archimedes, as Buoyancy.CubeOfHalfWaterDensity... but with the cube placed half in the water
@@ -109,8 +112,9 @@ TEST_P(EveryFluidSolver, FluidAndBodyConserveMomentumOver1000Steps) {
     drift = std::max(
         drift, (body + momentum_of(t.world->particles(), ParticleType::Liquid) - total0).norm());
   }
-  std::printf("%s: %d steps, momentum exchanged %.6f kg m/s, largest drift of the total %.3e (%.2e)\n",
-              GetParam().c_str(), steps, exchanged, drift, drift / exchanged);
+  std::printf(
+      "%s: %d steps, momentum exchanged %.6f kg m/s, largest drift of the total %.3e (%.2e)\n",
+      GetParam().c_str(), steps, exchanged, drift, drift / exchanged);
   EXPECT_GE(steps, 250);
   EXPECT_GT(exchanged, 0.1 * body0.norm());  // the cube did hit the water
   EXPECT_LT(drift, 1e-3 * exchanged);
@@ -119,8 +123,8 @@ TEST_P(EveryFluidSolver, FluidAndBodyConserveMomentumOver1000Steps) {
 // As DemFluid.BeadAndWaterConserveMomentumWithoutGravity: the liquid gathers the opposite of the
 // grain's fluid force (CouplingArray::LiquidForce), so bead + water keep their momentum.
 TEST_P(EveryFluidSolver, TakesUpTheMomentumAGrainLosesToDrag) {
-  TestWorld t = world_of(
-      grain_in_water(solver_without_gravity(GetParam()), 2500, 0.008, {0, 0, 0}, {0.3, 0, 0}, true));
+  TestWorld t = world_of(grain_in_water(solver_without_gravity(GetParam()), 2500, 0.008, {0, 0, 0},
+                                        {0.3, 0, 0}, true));
   const Eigen::Vector3d grain0 = momentum_of(t.world->particles(), ParticleType::Granular);
   const Eigen::Vector3d total0 = grain0 + momentum_of(t.world->particles(), ParticleType::Liquid);
   t.run_until(0.2);
@@ -134,8 +138,45 @@ TEST_P(EveryFluidSolver, TakesUpTheMomentumAGrainLosesToDrag) {
   EXPECT_LT(drift, 1e-3 * lost);
 }
 
+// Frame 0 shows the initial state's density (Solver::initialize_fields), not zeros: the SPH sum
+// at the initial positions. Over the tank's lattice that is the cubic spline's lattice sum,
+// 0.99997 rho0, everywhere a support radius below the surface, and less, never zero, above.
+// Filling it must not change the first step: a world whose field is zeroed again steps to the
+// same bits.
+TEST_P(EveryFluidSolver, FrameZeroShowsTheInitialDensityAndTheFirstStepIgnoresIt) {
+  auto doc = load_sample_json("hydrostatic_tank.json");
+  // Extents in whole spacings: the walls continue the water's lattice.
+  doc["particle_spacing"] = 0.04;
+  doc["containers"][0]["max"] = {0.32, 0.6, 0.32};
+  doc["fluid_blocks"][0]["max"] = {0.32, 0.48, 0.32};
+  doc["materials"]["water"]["solver"] = {{"name", GetParam()}};
+  TestWorld filled = world_of(doc), zeroed = world_of(doc);
+  Particles& p = filled.world->particles();
+  const std::vector<Real>& density = p.scalar_field("density");
+  const double surface = 0.48, support = 0.08;
+  std::size_t interior = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.type[i] != ParticleType::Liquid) continue;
+    EXPECT_GT(density[i], 500) << "particle " << p.id[i];
+    if (double(p.position[i].y) < surface - support) {
+      ++interior;
+      EXPECT_NEAR(density[i], 1000.0 * 0.99997, 0.1) << "particle " << p.id[i];
+    }
+  }
+  EXPECT_GT(interior, 500u);
+  std::vector<Real>& erased = zeroed.world->particles().scalar_field("density");
+  std::fill(erased.begin(), erased.end(), Real(0));
+  filled.world->step(filled.world->next_time_step());
+  zeroed.world->step(zeroed.world->next_time_step());
+  EXPECT_EQ(bitwise_differences(state_by_id(filled.world->particles()),
+                                state_by_id(zeroed.world->particles())),
+            0u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Registered, EveryFluidSolver, ::testing::ValuesIn(fluid_solver_names()),
-                         [](const ::testing::TestParamInfo<std::string>& solver) { return solver.param; });
+                         [](const ::testing::TestParamInfo<std::string>& solver) {
+                           return solver.param;
+                         });
 
 }  // namespace
 }  // namespace upf::testing
