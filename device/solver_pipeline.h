@@ -27,40 +27,12 @@
 #include "device/solver_part.h"
 #include "framework/core/stopwatch.h"
 #include "framework/particles/kinetic_energy.h"
+#include "framework/particles/particle_checks.h"
 #include "framework/world/device_pipeline.h"
 
 namespace upf::device {
 
 namespace pipeline_detail {
-
-struct LiquidSpeedSquared {
-  const Vec3* v;
-  const ParticleType* type;
-  UPF_HD Real operator()(std::uint32_t i) const {
-    return type[i] == ParticleType::Liquid ? squared_norm(v[i]) : Real(0);
-  }
-};
-
-struct SpeedSquaredOf {
-  const Vec3* v;
-  const ParticleType* type;
-  const MaterialId* material;
-  ParticleType of;
-  OwnedMaterials materials;
-  UPF_HD Real operator()(std::uint32_t i) const {
-    return type[i] == of && materials(material[i]) ? squared_norm(v[i]) : Real(0);
-  }
-};
-
-// World::check_stability's test, device-clean.
-struct BrokenParticle {
-  const Vec3* x;
-  const Vec3* v;
-  double limit2;
-  UPF_HD bool operator()(std::uint32_t i) const {
-    return !is_finite(x[i]) || !is_finite(v[i]) || double(squared_norm(v[i])) > limit2;
-  }
-};
 
 // Block b of block_sum (deterministic_sum.h): its values added in index order.
 template <class Value>
@@ -114,9 +86,8 @@ class SolverPipeline final : public DevicePipeline {
   Real max_liquid_speed_squared() const override {
     const typename Backend::ThreadScope threads(threads_);
     const DeviceParticles<Backend>& p = state_.particles;
-    return max_of<Backend>(
-        all_particles(p.size()),
-        pipeline_detail::LiquidSpeedSquared{raw<Vec3>(p.velocity), raw<ParticleType>(p.type)});
+    return max_of<Backend>(all_particles(p.size()),
+                           LiquidSpeedSquared{raw<Vec3>(p.velocity), raw<ParticleType>(p.type)});
   }
 
   Real max_speed_squared(ParticleType type,
@@ -127,9 +98,9 @@ class SolverPipeline final : public DevicePipeline {
     const DeviceParticles<Backend>& p = state_.particles;
     return max_of<Backend>(
         all_particles(p.size()),
-        pipeline_detail::SpeedSquaredOf{
-            raw<Vec3>(p.velocity), raw<ParticleType>(p.type), raw<MaterialId>(p.material), type,
-            OwnedMaterials{raw<std::uint8_t>(speed_materials_), speed_materials_.size()}});
+        SpeedSquaredOf{raw<Vec3>(p.velocity), raw<ParticleType>(p.type),
+                       raw<MaterialId>(p.material), type, raw<std::uint8_t>(speed_materials_),
+                       speed_materials_.size()});
   }
 
   double kinetic_energy() const override {
@@ -164,8 +135,7 @@ class SolverPipeline final : public DevicePipeline {
     const DeviceParticles<Backend>& p = state_.particles;
     return first_by_id<Backend>(
         p.size(), raw<ParticleId>(p.id),
-        pipeline_detail::BrokenParticle{raw<Vec3>(p.position), raw<Vec3>(p.velocity),
-                                        max_speed * max_speed});
+        BrokenParticle{raw<Vec3>(p.position), raw<Vec3>(p.velocity), max_speed * max_speed});
   }
 
   void save_last_good() override {

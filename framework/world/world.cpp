@@ -12,6 +12,7 @@
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
 #include "framework/particles/kinetic_energy.h"
+#include "framework/particles/particle_checks.h"
 
 namespace upf {
 
@@ -255,43 +256,6 @@ std::vector<std::string> World::stage_names() const {
   if (!bodies_.empty()) names.emplace_back("bodies");
   return names;
 }
-
-namespace {
-// |v_i|^2 of a liquid particle, 0 for the others.
-struct LiquidSpeedSquared {
-  const Vec3* v;
-  const ParticleType* type;
-  Real operator()(std::uint32_t i) const {
-    return type[i] == ParticleType::Liquid ? squared_norm(v[i]) : Real(0);
-  }
-};
-
-// A particle whose state went bad: a position or velocity that is not finite, or a runaway speed.
-struct BrokenParticle {
-  const Vec3* x;
-  const Vec3* v;
-  double limit2;
-  bool operator()(std::uint32_t i) const {
-    return !is_finite(x[i]) || !is_finite(v[i]) || double(squared_norm(v[i])) > limit2;
-  }
-};
-}  // namespace
-
-namespace {
-// |v_i|^2 of a particle of one type and of one of the flagged materials, 0 for the others.
-struct SpeedSquaredOf {
-  const Vec3* v;
-  const ParticleType* type;
-  const MaterialId* material;
-  ParticleType of;
-  const std::uint8_t* flags;
-  std::size_t count;
-  Real operator()(std::uint32_t i) const {
-    return type[i] == of && material[i] < count && flags[material[i]] != 0 ? squared_norm(v[i])
-                                                                           : Real(0);
-  }
-};
-}  // namespace
 
 Real World::max_speed_squared(ParticleType type, const std::uint8_t* material_flags,
                               std::size_t material_count) const {
