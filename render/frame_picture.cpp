@@ -121,11 +121,33 @@ std::array<double, 2> widened_if_flat(std::array<double, 2> range) {
   return range;
 }
 
+namespace {
+// Appends the points of `more` to `into`, keeping the point arrays both have (a frozen piece
+// written once holds the same arrays as the frames).
+void append_points(PolyData& into, const PolyData& more) {
+  std::vector<VtpArray> kept;
+  for (VtpArray& a : into.point_data) {
+    const VtpArray* b = more.point_array(a.name);
+    if (!b || b->components != a.components) continue;
+    a.values.insert(a.values.end(), b->values.begin(), b->values.end());
+    kept.push_back(std::move(a));
+  }
+  into.point_data = std::move(kept);
+  into.points.insert(into.points.end(), more.points.begin(), more.points.end());
+}
+}  // namespace
+
 FrameData read_frame(const RunFrame& f) {
   FrameData data;
   data.time = f.time;
   data.particles = read_vtp(f.parts.front());
-  for (std::size_t k = 1; k < f.parts.size(); ++k) data.meshes.push_back(read_vtp(f.parts[k]));
+  for (std::size_t k = 1; k < f.parts.size(); ++k) {
+    PolyData part = read_vtp(f.parts[k]);
+    if (part.triangles.empty() && part.point_array("type"))
+      append_points(data.particles, part);  // particles of their own file (frames/frozen.vtp)
+    else
+      data.meshes.push_back(std::move(part));
+  }
   return data;
 }
 

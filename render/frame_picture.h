@@ -21,8 +21,9 @@ struct FrameData {
   std::vector<PolyData> meshes;
 };
 
-// Reads a saved frame: its first part is the particles, the others are meshes. Throws InputError
-// naming a damaged file.
+// Reads a saved frame: its first part is the particles, and so is any other part that has a
+// "type" point array and no triangles (the frozen particles, written once); the others are
+// meshes. Throws InputError naming a damaged file.
 FrameData read_frame(const RunFrame& frame);
 
 // The field values a picture colours by, mapped onto [low, high].

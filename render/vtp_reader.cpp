@@ -1,5 +1,7 @@
 #include "render/vtp_reader.h"
 
+#include <zlib.h>
+
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -53,6 +55,51 @@ std::size_t to_count(const std::optional<std::string>& text, const std::string& 
   }
 }
 
+std::uint64_t header_at(const std::string& bytes, std::size_t at, const std::string& name) {
+  if (at > bytes.size() || bytes.size() - at < 8)
+    throw std::runtime_error("array '" + name + "' is cut short");
+  std::uint64_t v = 0;
+  std::memcpy(&v, bytes.data() + at, 8);
+  return v;
+}
+
+// The bytes of the array stored at `begin` of `bytes`: a UInt64 byte count and the data, or,
+// compressed, UInt64 [blocks, block size, last block's size, compressed sizes] and zlib blocks.
+std::string array_bytes(const std::string& bytes, std::size_t begin, bool compressed,
+                        const std::string& name) {
+  if (!compressed) {
+    const std::uint64_t length = header_at(bytes, begin, name);
+    if (length > bytes.size() - begin - 8)
+      throw std::runtime_error("array '" + name + "' is cut short");
+    return bytes.substr(begin + 8, length);
+  }
+  const std::uint64_t blocks = header_at(bytes, begin, name);
+  const std::uint64_t block_size = header_at(bytes, begin + 8, name);
+  const std::uint64_t last_size = header_at(bytes, begin + 16, name);
+  if (blocks > bytes.size() / 8 ||
+      (blocks > 0 && (block_size == 0 || block_size > (1u << 30) || last_size > block_size)))
+    throw std::runtime_error("array '" + name + "' has a malformed compression header");
+  std::size_t at = begin + 24 + blocks * 8;
+  std::string out;
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const std::uint64_t packed = header_at(bytes, begin + 24 + b * 8, name);
+    const std::uint64_t expected = b + 1 == blocks && last_size != 0 ? last_size : block_size;
+    if (at > bytes.size() || packed > bytes.size() - at)
+      throw std::runtime_error("array '" + name + "' is cut short");
+    const std::size_t start = out.size();
+    out.resize(start + expected);
+    uLongf unpacked = static_cast<uLongf>(expected);
+    const int rc =
+        uncompress(reinterpret_cast<Bytef*>(out.data() + start), &unpacked,
+                   reinterpret_cast<const Bytef*>(bytes.data() + at), static_cast<uLong>(packed));
+    if (rc != Z_OK || unpacked != expected)
+      throw std::runtime_error("array '" + name + "' block " + std::to_string(b) +
+                               " does not decompress");
+    at += packed;
+  }
+  return out;
+}
+
 PolyData parse(const std::string& bytes) {
   const std::size_t appended = bytes.find("<AppendedData");
   if (appended == std::string::npos)
@@ -67,6 +114,7 @@ PolyData parse(const std::string& bytes) {
   std::string section;
   std::vector<double> connectivity, offsets;
   bool have_points = false;
+  bool compressed = false;
   for (const XmlTag& tag : tags) {
     if (tag.name == "VTKFile" && !tag.closing) {
       if (tag.attribute("type") != "PolyData") throw std::runtime_error("not a PolyData file");
@@ -74,7 +122,11 @@ PolyData parse(const std::string& bytes) {
         throw std::runtime_error("big-endian data is not supported");
       if (tag.attribute("header_type").value_or("UInt32") != "UInt64")
         throw std::runtime_error("only header_type=\"UInt64\" is supported");
-      if (tag.attribute("compressor")) throw std::runtime_error("compressed data is not supported");
+      if (const auto c = tag.attribute("compressor")) {
+        if (*c != "vtkZLibDataCompressor")
+          throw std::runtime_error("compressor " + *c + " is not supported (only zlib)");
+        compressed = true;
+      }
     } else if (tag.name == "Piece" && !tag.closing) {
       if (++pieces > 1) throw std::runtime_error("more than one <Piece>");
       points = to_count(tag.attribute("NumberOfPoints"), "NumberOfPoints");
@@ -93,17 +145,15 @@ PolyData parse(const std::string& bytes) {
       const std::size_t components =
           std::max<std::size_t>(1, to_count(tag.attribute("NumberOfComponents"), "components"));
       const std::size_t offset = to_count(tag.attribute("offset"), "offset");
-      if (data_start + offset + 8 > bytes.size())
+      if (offset > bytes.size() - data_start)
         throw std::runtime_error("array '" + name + "' starts past the end of the file");
-      std::uint64_t length = 0;
-      std::memcpy(&length, bytes.data() + data_start + offset, 8);
-      const std::size_t begin = data_start + offset + 8;
-      if (length > bytes.size() - begin || length % (size * components) != 0)
-        throw std::runtime_error("array '" + name + "' is cut short or of a wrong length");
+      const std::string data = array_bytes(bytes, data_start + offset, compressed, name);
+      if (data.size() % (size * components) != 0)
+        throw std::runtime_error("array '" + name + "' is of a wrong length");
       VtpArray array{name, int(components), {}};
-      array.values.resize(length / size);
+      array.values.resize(data.size() / size);
       for (std::size_t k = 0; k < array.values.size(); ++k)
-        array.values[k] = load_value(type, bytes.data() + begin + k * size);
+        array.values[k] = load_value(type, data.data() + k * size);
       if (section == "Points") {
         if (components != 3 || array.tuples() != points)
           throw std::runtime_error("Points does not hold 3 components per point");

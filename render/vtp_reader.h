@@ -3,8 +3,8 @@
 // https://docs.vtk.org/en/latest/vtk_file_formats/vtkxml_file_format.html (PolyData, raw
 // appended data, header_type).
 //
-// It reads what upf writes: one <Piece>, little-endian, UInt64 block headers, raw appended data,
-// polygons that are all triangles. Any other layout is reported as unsupported, naming the file.
+// It reads what upf writes: one <Piece>, little-endian, UInt64 block headers, appended data raw
+// or zlib-compressed, polygons that are all triangles. Any other layout is reported as unsupported, naming the file.
 #pragma once
 
 #include <Eigen/Core>

@@ -25,6 +25,7 @@
 #include "framework/scene/solver_override.h"
 #include "framework/solver/registry.h"
 #include "interrupt_signal.h"
+#include "output_estimate_report.h"
 #include "progress.h"
 
 namespace upf::app {
@@ -108,6 +109,9 @@ int run_command(const RunArgs& args) {
   options.stop_requested = [&] { return interrupt.requested(); };
   ProgressReporter progress(stderr);
   if (!args.quiet) options.on_progress = [&](const RunProgress& p) { progress.update(p); };
+  options.on_output_estimate = [&](const OutputEstimate& e) {
+    report_output_estimate(e, scene, args.quiet, stderr);
+  };
   RunResult r;
   try {
     r = run_simulation(scene, registry, options);

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "framework/output/atomic_file.h"
@@ -23,9 +24,9 @@ namespace upf {
 
 namespace {
 
-static_assert(sizeof(ParticleType) == 1, "type is written as uchar");
-static_assert(std::is_same_v<ParticleId, std::uint32_t>, "id is written as uint");
-static_assert(std::is_same_v<MaterialId, std::uint16_t>, "material is written as ushort");
+static_assert(sizeof(ParticleType) == 1, "type is written as uint8");
+static_assert(std::is_same_v<ParticleId, std::uint32_t>, "id is written as uint32");
+static_assert(std::is_same_v<MaterialId, std::uint16_t>, "material is written as uint16");
 static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559,
               "PLY float is an IEEE 754 single");
 
@@ -50,6 +51,15 @@ struct Extra {
   const std::vector<Vec3>* vector = nullptr;
 };
 
+// The header and the record layout of a file of `particles` with `fields`.
+struct Layout {
+  std::string header;
+  std::size_t record = 0;  // bytes per vertex
+  std::vector<Extra> extras;
+};
+
+Layout layout_for(const Particles& particles, const std::vector<std::string>& fields);
+
 }  // namespace
 
 std::string ply_property_name(std::string_view name) {
@@ -59,11 +69,10 @@ std::string ply_property_name(std::string_view name) {
   return out.empty() ? std::string("_") : out;
 }
 
-void write_ply_points(const std::filesystem::path& path, const Particles& particles,
-                      const std::vector<std::string>& fields) {
-  const std::size_t n = particles.size();
-  check_array_sizes(particles, "write_ply_points");
+namespace {
 
+Layout layout_for(const Particles& particles, const std::vector<std::string>& fields) {
+  const std::size_t n = particles.size();
   std::string header =
       "ply\n"
       "format binary_little_endian 1.0\n"
@@ -74,12 +83,12 @@ void write_ply_points(const std::filesystem::path& path, const Particles& partic
       "property float x\n"
       "property float y\n"
       "property float z\n"
-      "property uchar red\n"
-      "property uchar green\n"
-      "property uchar blue\n"
-      "property uint id\n"
-      "property uchar type\n"
-      "property ushort material\n"
+      "property uint8 red\n"
+      "property uint8 green\n"
+      "property uint8 blue\n"
+      "property uint32 id\n"
+      "property uint8 type\n"
+      "property uint16 material\n"
       "property float vx\n"
       "property float vy\n"
       "property float vz\n";
@@ -114,6 +123,21 @@ void write_ply_points(const std::filesystem::path& path, const Particles& partic
     }
   }
   header += "end_header\n";
+  return {std::move(header), record, std::move(extras)};
+}
+
+}  // namespace
+
+std::size_t ply_points_bytes(const Particles& particles, const std::vector<std::string>& fields) {
+  const Layout layout = layout_for(particles, fields);
+  return layout.header.size() + particles.size() * layout.record;
+}
+
+void write_ply_points(const std::filesystem::path& path, const Particles& particles,
+                      const std::vector<std::string>& fields) {
+  const std::size_t n = particles.size();
+  check_array_sizes(particles, "write_ply_points");
+  const auto [header, record, extras] = layout_for(particles, fields);
 
   write_file_atomically(path, [&](std::ostream& out) {
     out.write(header.data(), std::streamsize(header.size()));

@@ -8,14 +8,16 @@
 // interleaved per vertex in the order the header lists them, with no padding:
 //
 //   float x, y, z                 position
-//   uchar red, green, blue        colour by particle type (type_palette.h)
-//   uint id                       the stable particle id
-//   uchar type                    ParticleType value (0 liquid, 1 rigid, 2 granular, 3 frozen)
-//   ushort material               material index
+//   uint8 red, green, blue        colour by particle type (type_palette.h)
+//   uint32 id                     the stable particle id
+//   uint8 type                    ParticleType value (0 liquid, 1 rigid, 2 granular, 3 frozen)
+//   uint16 material               material index
 //   float vx, vy, vz              velocity
 //   float NAME                    each exported scalar field, in the order asked for
 //   float NAME_x, NAME_y, NAME_z  each exported vector field
 //
+// The integer types carry their sizes in their names (uint8 rather than uchar): both spellings
+// are in the format, and meshio's binary reader knows only some of the old ones (no "ushort").
 // There is no face element: readers take a file with vertices only as a point cloud. Reals are
 // written as float even when upf::Real is double: a picture needs no more, and float is what
 // every PLY reader understands.
@@ -39,6 +41,9 @@ namespace upf {
 // Throws OutputError if the file cannot be written; the directory must exist.
 void write_ply_points(const std::filesystem::path& path, const Particles& particles,
                       const std::vector<std::string>& fields);
+
+// The bytes write_ply_points writes for `particles` and `fields`: the size estimate of a run.
+std::size_t ply_points_bytes(const Particles& particles, const std::vector<std::string>& fields);
 
 // The PLY property name for a field name: anything but printable ASCII other than space becomes
 // '_' (a header is ASCII, its lines split at whitespace), and an empty name becomes "_".

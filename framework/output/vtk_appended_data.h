@@ -5,7 +5,10 @@
 //
 // Layout: the XML header lists every DataArray with format="appended" and an offset into the
 // <AppendedData encoding="raw"> block, which starts after a '_' and holds, per array, a UInt64
-// byte count followed by the array's bytes in the file's byte order.
+// byte count followed by the array's bytes in the file's byte order. Compressed
+// (compressor="vtkZLibDataCompressor"), an array is cut into blocks of kBlockBytes and its
+// header is UInt64 [block count, block size, size of the last block, compressed size of each
+// block], followed by the blocks, each a zlib stream (RFC 1950) of its block's bytes.
 #pragma once
 
 #include <cstddef>
@@ -18,6 +21,13 @@
 namespace upf::vtk_xml {
 
 using Header = std::uint64_t;  // header_type="UInt64": no 4 GiB limit per array.
+
+// How the appended arrays are stored: as they are in memory, or zlib-compressed, which ParaView,
+// VisIt and VTK's readers read as they do the files VTK itself writes compressed.
+enum class Compression { none, zlib };
+
+// VTK's own writer's block size: an array is compressed in independent blocks of this size.
+inline constexpr std::size_t kBlockBytes = 32768;
 
 // One DataArray, written straight from memory: `data` must outlive the write and hold `bytes`
 // bytes laid out as `type` (a VTK type name such as "Float64") with `components` per tuple.
@@ -51,6 +61,7 @@ struct PieceCounts {
 // Writes a PolyData file with one <Piece> holding `sections` to `path` atomically (see
 // write_file_atomically). Throws OutputError if the file cannot be written.
 void write_polydata(const std::filesystem::path& path, const PieceCounts& counts,
-                    const std::vector<Section>& sections);
+                    const std::vector<Section>& sections,
+                    Compression compression = Compression::none);
 
 }  // namespace upf::vtk_xml

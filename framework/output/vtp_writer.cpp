@@ -4,6 +4,7 @@
 #include "framework/output/vtp_writer.h"
 
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <stdexcept>
@@ -58,11 +59,11 @@ std::string xml_escape(std::string_view s) {
   return out;
 }
 
-void write_vtp(const std::filesystem::path& path, const Particles& particles,
-               const std::vector<std::string>& fields) {
-  const std::size_t n = particles.size();
-  check_array_sizes(particles, "write_vtp");
+namespace {
 
+// The point-data arrays of a frame, in file order.
+std::vector<vtk_xml::Array> point_arrays(const Particles& particles,
+                                         const std::vector<std::string>& fields) {
   std::vector<vtk_xml::Array> point_data = {
       make_array("id", "UInt32", 1, particles.id),
       make_array("type", "UInt8", 1, particles.type),
@@ -79,18 +80,54 @@ void write_vtp(const std::filesystem::path& path, const Particles& particles,
       point_data.push_back(make_array(name, kRealType, 3, *v));
     }
   }
+  return point_data;
+}
 
-  // Vertex i is point i: connectivity is 0..n-1 and the (end) offsets are 1..n, so one sequence
-  // 0..n serves both arrays.
-  std::vector<std::int64_t> sequence(n + 1);
-  std::iota(sequence.begin(), sequence.end(), std::int64_t{0});
-  const std::size_t index_bytes = n * sizeof(std::int64_t);
+// Vertex i is point i: connectivity is 0..n-1 and the (end) offsets are 1..n, so one sequence
+// 0..n serves both arrays. Int32 while it fits: half the bytes of Int64.
+template <class Index>
+void write_with_index(const std::filesystem::path& path, const Particles& particles,
+                      std::vector<vtk_xml::Array> point_data, const char* index_type,
+                      vtk_xml::Compression compression) {
+  const std::size_t n = particles.size();
+  std::vector<Index> sequence(n + 1);
+  std::iota(sequence.begin(), sequence.end(), Index{0});
+  const std::size_t index_bytes = n * sizeof(Index);
   vtk_xml::write_polydata(path, {.points = n, .verts = n, .polys = 0},
                           {{"PointData", std::move(point_data)},
                            {"Points", {make_array("Points", kRealType, 3, particles.position)}},
                            {"Verts",
-                            {{"connectivity", "Int64", 1, sequence.data(), index_bytes},
-                             {"offsets", "Int64", 1, sequence.data() + 1, index_bytes}}}});
+                            {{"connectivity", index_type, 1, sequence.data(), index_bytes},
+                             {"offsets", index_type, 1, sequence.data() + 1, index_bytes}}}},
+                          compression);
+}
+
+bool fits_int32(std::size_t n) {
+  return n < std::size_t(std::numeric_limits<std::int32_t>::max());
+}
+
+}  // namespace
+
+void write_vtp(const std::filesystem::path& path, const Particles& particles,
+               const std::vector<std::string>& fields, vtk_xml::Compression compression) {
+  check_array_sizes(particles, "write_vtp");
+  auto point_data = point_arrays(particles, fields);
+  if (fits_int32(particles.size()))
+    write_with_index<std::int32_t>(path, particles, std::move(point_data), "Int32", compression);
+  else
+    write_with_index<std::int64_t>(path, particles, std::move(point_data), "Int64", compression);
+}
+
+std::size_t vtp_data_bytes(const Particles& particles, const std::vector<std::string>& fields) {
+  const std::size_t n = particles.size();
+  std::size_t bytes = 0;
+  std::size_t arrays = 3;  // Points, connectivity, offsets
+  for (const vtk_xml::Array& a : point_arrays(particles, fields)) {
+    bytes += a.bytes;
+    ++arrays;
+  }
+  bytes += n * sizeof(Vec3) + 2 * n * (fits_int32(n) ? 4 : 8);
+  return bytes + arrays * sizeof(vtk_xml::Header);
 }
 
 }  // namespace upf

@@ -9,6 +9,8 @@
 #include "framework/output/mesh_vtp_writer.h"
 #include "framework/output/ply_points_writer.h"
 #include "framework/output/vtp_writer.h"
+#include "framework/output/z_up.h"
+#include "framework/particles/particles_of_types.h"
 
 namespace upf {
 
@@ -28,6 +30,13 @@ FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescri
       vtp_(enabled && scene.output.vtp),
       ply_(enabled && scene.output.ply),
       surface_(enabled && scene.output.surface),
+      compression_(scene.output.compress ? vtk_xml::Compression::zlib : vtk_xml::Compression::none),
+      vtp_types_(scene.output.vtp_types),
+      ply_types_(scene.output.ply_types),
+      ply_z_up_(scene.output.ply_z_up),
+      frozen_piece_(vtp_ && scene.output.frozen_once &&
+                    in_mask(scene.output.vtp_types, ParticleType::Frozen) &&
+                    world.particles().count(ParticleType::Frozen) > 0),
       spacing_(scene.world.spacing),
       series_(out_dir / "particles.pvd"),
       world_(world),
@@ -40,23 +49,90 @@ FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescri
   if (vtp_ || ply_ || surface_) ensure_directory(out_dir / "frames");
 }
 
+namespace {
+
+constexpr const char* kFrozenFile = "frames/frozen.vtp";
+
+// The types a frame file of a format holds: those asked for, less the frozen ones when they go
+// into a piece of their own.
+TypeMask frame_types(TypeMask asked, bool frozen_piece) {
+  return frozen_piece ? TypeMask(asked & ~mask_of(ParticleType::Frozen)) : asked;
+}
+
+// Calls write(p) with `particles`, or with a copy holding only the types in `types` when some
+// are left out.
+template <class Write>
+void with_types(const Particles& particles, TypeMask types, Write&& write) {
+  if (all_of_types(particles, types))
+    write(particles);
+  else
+    write(particles_of_types(particles, types));
+}
+
+}  // namespace
+
 void FrameWriter::write(const Particles& particles, double time) {
   std::vector<std::string> files;
   if (vtp_) {
     files.push_back(frame_file("frames/frame_%05d.vtp", frames_));
-    write_vtp(out_dir_ / files.back(), particles, fields_);
+    with_types(particles, frame_types(vtp_types_, frozen_piece_), [&](const Particles& p) {
+      write_vtp(out_dir_ / files.back(), p, fields_, compression_);
+    });
   }
-  if (ply_)  // for Blender and MeshLab; ParaView has the .vtp, so not in the .pvd
-    write_ply_points(out_dir_ / frame_file("frames/frame_%05d.ply", frames_), particles, fields_);
+  if (frozen_piece_) {
+    // Frozen particles never move: their positions at the first frame are those at every frame.
+    if (!frozen_written_) {
+      write_vtp(out_dir_ / kFrozenFile,
+                particles_of_types(particles, mask_of(ParticleType::Frozen)), fields_,
+                compression_);
+      frozen_written_ = true;
+    }
+    files.push_back(kFrozenFile);
+  }
+  if (ply_) {  // for Blender and MeshLab; ParaView has the .vtp, so not in the .pvd
+    const auto path = out_dir_ / frame_file("frames/frame_%05d.ply", frames_);
+    if (ply_z_up_) {
+      Particles turned = particles_of_types(particles, ply_types_);
+      turn_to_z_up(turned);
+      write_ply_points(path, turned, fields_);
+    } else {
+      with_types(particles, ply_types_,
+                 [&](const Particles& p) { write_ply_points(path, p, fields_); });
+    }
+  }
   for (auto& f : bodies_.write_frame(frames_, time)) files.push_back(std::move(f));
   if (surface_) files.push_back(write_surface(particles));  // the last part at every step
   if (vtp_ || surface_) series_.add(time, files);
   ++frames_;
 }
 
+std::uint64_t FrameWriter::bytes_per_frame(const Particles& particles) const {
+  std::uint64_t bytes = 0;
+  if (vtp_)
+    with_types(particles, frame_types(vtp_types_, frozen_piece_),
+               [&](const Particles& p) { bytes += vtp_data_bytes(p, fields_); });
+  if (ply_)
+    with_types(particles, ply_types_,
+               [&](const Particles& p) { bytes += ply_points_bytes(p, fields_); });
+  return bytes;
+}
+
+std::uint64_t FrameWriter::bytes_once(const Particles& particles) const {
+  return frozen_piece_
+             ? vtp_data_bytes(particles_of_types(particles, mask_of(ParticleType::Frozen)), fields_)
+             : 0;
+}
+
 std::string FrameWriter::write_surface(const Particles& particles) const {
   const MeshPiece mesh = surface_mesher_(particles, spacing_, world_.executor().threads());
-  write_mesh_ply(out_dir_ / frame_file("frames/surface_%05d.ply", frames_), mesh);
+  const auto ply = out_dir_ / frame_file("frames/surface_%05d.ply", frames_);
+  if (ply_z_up_) {
+    MeshPiece turned = mesh;
+    turn_to_z_up(turned);
+    write_mesh_ply(ply, turned);
+  } else {
+    write_mesh_ply(ply, mesh);
+  }
   const std::string vtp = frame_file("frames/surface_%05d.vtp", frames_);
   write_mesh_vtp(out_dir_ / vtp, {mesh}, {});
   return vtp;
@@ -70,6 +146,9 @@ void FrameWriter::save_state(StateWriter& out) {
 
 void FrameWriter::restore_state(StateReader& in) {
   frames_ = in.get<std::int32_t>();
+  // The run being resumed wrote the frozen piece; its bytes stay (this world's particle order,
+  // and so the piece's, may differ from the first frame's).
+  frozen_written_ = std::filesystem::exists(out_dir_ / kFrozenFile);
   series_.restore_state(in);
   bodies_.restore_state(in);
 }

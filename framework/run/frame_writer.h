@@ -1,7 +1,9 @@
 // A run's frames: frames/frame_NNNNN.vtp (and .ply point clouds, liquid surface meshes) at every
-// frame time, the bodies' files (body_outputs.h), and particles.pvd, the series ParaView opens.
+// frame time, the frozen particles once (frames/frozen.vtp), the bodies' files
+// (body_outputs.h), and particles.pvd, the series ParaView opens.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -9,6 +11,7 @@
 
 #include "framework/core/mesh_piece.h"
 #include "framework/output/pvd_series.h"
+#include "framework/output/vtk_appended_data.h"
 #include "framework/run/body_outputs.h"
 #include "framework/scene/scene.h"
 #include "framework/world/world.h"
@@ -32,6 +35,12 @@ class FrameWriter {
 
   // Writes the frame of `particles` at `time`: the world's state, or its last good state.
   void write(const Particles& particles, double time);
+  // The bytes write() puts on disk per frame for `particles` uncompressed (particle files only:
+  // not the surface meshes, whose size depends on the flow, nor the bodies' small files), and
+  // those written once (the frozen piece): the size estimate of a run.
+  std::uint64_t bytes_per_frame(const Particles& particles) const;
+  std::uint64_t bytes_once(const Particles& particles) const;
+  bool compressed() const { return compression_ == vtk_xml::Compression::zlib; }
   int frames() const { return frames_; }
   void save_state(StateWriter& out);
   void restore_state(StateReader& in);
@@ -45,6 +54,12 @@ class FrameWriter {
   bool vtp_;      // .vtp frames and the .pvd
   bool ply_;      // .ply point clouds
   bool surface_;  // liquid surface meshes: .ply, and .vtp in the .pvd
+  vtk_xml::Compression compression_;
+  TypeMask vtp_types_;  // the types in the .vtp frame files (frozen ones apart, see below)
+  TypeMask ply_types_;
+  bool ply_z_up_;       // PLY files turned Z-up for Blender (z_up.h)
+  bool frozen_piece_;            // the frozen particles go once into frames/frozen.vtp
+  bool frozen_written_ = false;  // by this process (a resumed run writes the same bytes again)
   double spacing_;
   PvdSeries series_;
   const World& world_;

@@ -40,7 +40,8 @@ std::size_t clear_earlier_run(const fs::path& dir) {
                            "summary.json", "scene.json", kCheckpointFileName})
     removed += fs::remove(dir / name, ec) ? 1 : 0;
   removed += remove_matching(dir / "frames", [](const std::string& n) {
-    return numbered(n, "frame_") || numbered(n, "surface_") || numbered(n, "bodies_");
+    return numbered(n, "frame_") || numbered(n, "surface_") || numbered(n, "bodies_") ||
+           n == "frozen.vtp";
   });
   removed += remove_matching(dir / "render", [](const std::string& n) {
     return numbered(n, "frame_") || fs::path(n).extension() == ".mp4";

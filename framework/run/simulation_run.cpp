@@ -86,6 +86,21 @@ class RunRecorder {
   // the state now, the next one the first n / fps after it.
   void start_at(double time) { next_frame_ = std::int32_t(std::floor(time * fps_ + 1e-9)) + 1; }
 
+  // The frames still to come up to `end`: those on the frame clock, one at the end when it falls
+  // between them, and with `first` the frame of the state now.
+  OutputEstimate estimate(double end, bool first) const {
+    OutputEstimate e;
+    const auto last_on_clock = std::int64_t(std::floor(end * fps_ + 1e-9));
+    e.frames = int(std::max<std::int64_t>(0, last_on_clock - next_frame_ + 1)) + (first ? 1 : 0);
+    if (std::abs(double(last_on_clock) / fps_ - end) > 1e-12) ++e.frames;
+    e.bytes_per_frame = frames_.bytes_per_frame(world_.particles());
+    e.bytes_once = frames_.bytes_once(world_.particles());
+    e.total_bytes = e.bytes_once + std::uint64_t(e.frames) * e.bytes_per_frame;
+    e.compressed = frames_.compressed();
+    e.surface = scene_.output.surface;
+    return e;
+  }
+
   // The result's totals and summary.json.
   void finish(double wall_seconds) {
     result_.wall_seconds = wall_seconds;
@@ -192,8 +207,10 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
     if (!in.at_end()) in.fail("unread bytes at the end");
   } else {
     recorder.start_at(world.time());
-    recorder.frame(world.particles(), world.time());
   }
+  if (options.write_frames && options.on_output_estimate && world.time() < end - 1e-12)
+    options.on_output_estimate(recorder.estimate(end, !options.resume));
+  if (!options.resume) recorder.frame(world.particles(), world.time());
 
   if (options.resume && world.time() >= end - 1e-12) {
     // Complete already (its final checkpoint is at the end): nothing to simulate, nothing to

@@ -34,6 +34,16 @@ struct CheckpointPolicy {
   bool wall_clock = true;  // wall-clock seconds, else simulated seconds
 };
 
+// What a run's frames will take on disk, known before its first step (FrameWriter's sizes).
+struct OutputEstimate {
+  int frames = 0;  // still to be written by this run
+  std::uint64_t bytes_per_frame = 0;
+  std::uint64_t bytes_once = 0;  // the frozen piece
+  std::uint64_t total_bytes = 0;
+  bool compressed = false;  // the figures are the uncompressed sizes, an upper bound
+  bool surface = false;     // surface meshes come on top, their size unknown beforehand
+};
+
 struct RunOptions {
   std::filesystem::path out_dir = "out";
   int threads = 0;                 // 0: OpenMP's default
@@ -41,6 +51,8 @@ struct RunOptions {
   bool write_frames = true;
   std::function<void(const RunProgress&)> on_progress;  // called after every step
   std::function<void(const World&)> on_step;            // tests and tools look at the world
+  // Called once before anything but scene.json is written, when the run writes frames.
+  std::function<void(const OutputEstimate&)> on_output_estimate;
   // False: an instability ends the run with status "unstable" instead of throwing, so a
   // comparison keeps the figures of the steps that did succeed.
   bool throw_on_instability = true;

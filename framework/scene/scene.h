@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/core/particle_type.h"
 #include "framework/materials/material.h"
 #include "framework/params/param_spec.h"
 #include "framework/scene/scene_section.h"
@@ -60,6 +61,23 @@ struct OutputDesc {
   // "surface": a triangle mesh of the liquid's surface per frame (frames/surface_NNNNN.ply, and
   // frames/surface_NNNNN.vtp as a further part of each time step in particles.pvd).
   bool surface = false;
+  // "compression": "zlib" compresses the .vtp arrays (VTK's vtkZLibDataCompressor layout),
+  // "none" writes them as they are in memory.
+  bool compress = true;
+  // "frozen": "once" writes the frozen particles, which never move, once into
+  // frames/frozen.vtp, a part of every time step in particles.pvd, and leaves them out of the
+  // frame files; "every_frame" keeps them in every frame.
+  bool frozen_once = true;
+  // "types": which particle types each format writes ({"vtp": [...], "ply": [...]}); all four
+  // unless the scene says.
+  TypeMask vtp_types = kAllTypes;
+  TypeMask ply_types = kAllTypes;
+  // "ply_up": "z" turns the PLY files (points and surfaces) Z-up for Blender (z_up.h); "y"
+  // writes them in the scene's axes, as the .vtp files always are.
+  bool ply_z_up = false;
+  // "size_warning": `upf run` warns before the first step when its frames would take more
+  // bytes than this (GB, 10^9 bytes).
+  double size_warning_gb = 20;
 };
 
 struct SceneDescription {

@@ -3,6 +3,7 @@
 #include <unistd.h>
 #include <cctype>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -395,17 +396,75 @@ void read_output_formats(JsonInput& in, const json& f, OutputDesc& output) {
   }
 }
 
-// /output: frame rate, field names and formats.
+// A string at object[key] that must be one of `choices`: the index of the one given, or
+// `fallback` when absent or wrong (reported).
+std::size_t read_choice(JsonInput& in, const json& object, const std::string& path, const char* key,
+                        std::initializer_list<const char*> choices, std::size_t fallback) {
+  const auto value = in.string(object, path, key, false);
+  if (!value) return fallback;
+  std::string known;
+  std::size_t index = 0;
+  for (const char* c : choices) {
+    if (*value == c) return index;
+    known += (index++ == 0 ? "\"" : ", \"") + std::string(c) + "\"";
+  }
+  in.problem(JsonInput::child(path, key),
+             "unknown value \"" + *value + "\" (allowed: " + known + ")");
+  return fallback;
+}
+
+// /output/types: {"vtp": ["liquid", ...], "ply": [...]}, the particle types each format writes.
+void read_output_types(JsonInput& in, const json& types, OutputDesc& output) {
+  const std::string path = "/output/types";
+  if (!in.expect_object(types, path)) return;
+  in.check_keys(types, path, {"vtp", "ply"});
+  for (auto [format, mask] :
+       {std::pair{"vtp", &OutputDesc::vtp_types}, std::pair{"ply", &OutputDesc::ply_types}}) {
+    auto it = types.find(format);
+    if (it == types.end()) continue;
+    const std::string where = JsonInput::child(path, format);
+    if (!it->is_array()) {
+      in.problem(where, "expected an array of particle types, found " + json_type_name(*it));
+      continue;
+    }
+    TypeMask chosen = 0;
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const json& name = (*it)[i];
+      const auto type =
+          name.is_string() ? parse_particle_type(name.get<std::string>()) : std::nullopt;
+      if (!type) {
+        in.problem(JsonInput::child(where, i),
+                   "unknown particle type " + name.dump() +
+                       " (known: \"liquid\", \"rigid\", \"granular\", \"frozen\")");
+        continue;
+      }
+      chosen |= mask_of(*type);
+    }
+    output.*mask = chosen;
+  }
+}
+
+// /output: frame rate, field names, formats and how the files are laid out.
 void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
   auto it = doc.find("output");
   if (it == doc.end() || !in.expect_object(*it, "/output")) return;
   const auto specs = output_setting_specs();
   std::vector<std::string> keys = spec_names(specs);
-  keys.insert(keys.end(), {"fields", "formats"});
+  keys.insert(keys.end(), {"fields", "formats", "compression", "frozen", "types", "ply_up"});
   in.check_keys(*it, "/output", keys);
-  scene.output.fps = in.number(*it, "/output", spec_named(specs, "fps"), scene.output.fps);
-  if (auto f = it->find("fields"); f != it->end()) read_output_fields(in, *f, scene.output);
-  if (auto f = it->find("formats"); f != it->end()) read_output_formats(in, *f, scene.output);
+  OutputDesc& output = scene.output;
+  output.fps = in.number(*it, "/output", spec_named(specs, "fps"), output.fps);
+  output.size_warning_gb =
+      in.number(*it, "/output", spec_named(specs, "size_warning"), output.size_warning_gb);
+  if (auto f = it->find("fields"); f != it->end()) read_output_fields(in, *f, output);
+  if (auto f = it->find("formats"); f != it->end()) read_output_formats(in, *f, output);
+  output.compress = read_choice(in, *it, "/output", "compression", {"zlib", "none"},
+                                output.compress ? 0 : 1) == 0;
+  output.frozen_once = read_choice(in, *it, "/output", "frozen", {"once", "every_frame"},
+                                   output.frozen_once ? 0 : 1) == 0;
+  output.ply_z_up =
+      read_choice(in, *it, "/output", "ply_up", {"y", "z"}, output.ply_z_up ? 1 : 0) == 1;
+  if (auto f = it->find("types"); f != it->end()) read_output_types(in, *f, output);
 }
 
 // Plug-in sections ("bodies"), once materials, spacing and containers are known; something must

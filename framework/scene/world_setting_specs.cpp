@@ -47,6 +47,9 @@ std::vector<ParamSpec> output_setting_specs() {
        "frames per simulated second; steps land exactly on every n / fps, where frame n is "
        "written, and a last frame is written at the end",
        false, true},
+      {"size_warning", "GB", 20, 0, 1e9,
+       "upf run warns before the first step when its frames would take more than this many "
+       "gigabytes (10^9 bytes; the uncompressed size, which compression only lowers)"},
   };
 }
 

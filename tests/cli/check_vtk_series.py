@@ -5,17 +5,23 @@ Usage: python3 check_vtk_series.py RUN_DIR SCENE_JSON DENSITY_FRAME DENSITY_TOLE
 
 RUN_DIR is what `upf run SCENE_JSON --out RUN_DIR` wrote, with "formats": ["vtp", "ply"] and
 "fields" naming at least "density" and "pressure". The scene must hold one container and one
-liquid block (the liquid gets ids in lattice order, after the walls).
+liquid block (the liquid gets ids in lattice order, after the walls). With the default
+"frozen": "once" the walls are in frames/frozen.vtp, part 1 of every time step, and the scene
+must leave them out of the PLY files too ("types": {"ply": [...]} without "frozen"), so that
+frame and point cloud hold the same particles in the same order.
 
 Checks:
 - particles.pvd (parsed with xml.etree) lists summary.json's frame count, at increasing times
   from 0, and frames/ holds exactly those .vtp files and one .ply per frame;
+- frames/frozen.vtp, when the .pvd lists it: part 1 of every time step, frozen particles only,
+  whose ids and the frames' make up summary.json's particle count without overlap;
 - each .vtp, read by vtk.vtkXMLPolyDataReader, has summary.json's particle count as points and
   as vertex cells, the arrays id, type, material (one component, integer types), velocity
   (three), density and pressure (one); unique ids, types 0..3, as many liquid as summary.json says;
 - each frame's .ply, read by vtk.vtkPLYReader, has the same points in the same order, with one
   colour per type; its header, parsed here, lists the properties the docs give, and its binary
-  records carry the same ids, types, materials, velocities, densities and pressures;
+  records carry the same ids, types, materials, velocities, densities and pressures; meshio
+  (when installed) reads the same points, colours and ids;
 - frame 0: the liquid sits on the block's lattice, min + (i + 1/2, j + 1/2, k + 1/2) * spacing,
   i fastest (framework/scene/scene_builder.cpp, docs/scene-format.md "Fluid lattice"), to float
   precision, at rest;
@@ -52,7 +58,13 @@ FLOAT_REL = 4 * 2.0 ** -23
 
 PLY_FIXED = ["x", "y", "z", "red", "green", "blue", "id", "type", "material", "vx", "vy", "vz"]
 PLY_TYPES = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I",
-             "float": "f", "double": "d"}
+             "float": "f", "double": "d", "int8": "b", "uint8": "B", "int16": "h",
+             "uint16": "H", "int32": "i", "uint32": "I", "float32": "f", "float64": "d"}
+
+try:
+    import meshio
+except ImportError:
+    meshio = None
 
 
 class Failures:
@@ -197,8 +209,10 @@ def check_frame(k, vtp_path, ply_path, expect, failures):
     positions = [data.GetPoint(i) for i in range(n)]
     ids, types = arrays["id"], arrays["type"]
     failures.check(len(set(ids)) == n, f"{where}: {n - len(set(ids))} repeated ids")
-    bad_types = sorted({t for t in types if t not in (0, 1, 2, 3)})
+    bad_types = sorted({t for t in types if t not in expect["types"]})
     failures.check(not bad_types, f"{where}: invalid type values {bad_types}")
+    shared = expect["frozen_ids"] & set(ids)
+    failures.check(not shared, f"{where}: {len(shared)} ids also in frames/frozen.vtp")
     liquid = sum(1 for t in types if t == 0)
     failures.check(liquid == expect["liquid"],
                    f"{where}: {liquid} liquid particles, summary.json says {expect['liquid']}")
@@ -224,6 +238,22 @@ def check_frame(k, vtp_path, ply_path, expect, failures):
             colours = [next(iter(c)) for c in colour_of.values()]
             failures.check(len(set(colours)) == len(colours),
                            f"{pwhere}: two types share a colour: {colour_of}")
+    if meshio is not None:
+        mesh = meshio.read(ply_path)
+        if failures.check(len(mesh.points) == n, f"{pwhere}: meshio reads {len(mesh.points)} "
+                          f"points, the .vtp has {n}"):
+            moved = [i for i in range(n)
+                     if tuple(float(c) for c in mesh.points[i]) != tuple(map(f32, positions[i]))]
+            failures.check(not moved, f"{pwhere}: meshio: {len(moved)} positions differ")
+            data = mesh.point_data
+            failures.check(all(k in data for k in ("red", "green", "blue", "id", "type")),
+                           f"{pwhere}: meshio reads the properties {sorted(data)}")
+            if "id" in data:
+                failures.check([int(v) for v in data["id"]] == [int(v) for v in ids],
+                               f"{pwhere}: meshio reads other ids than the .vtp's")
+            if "red" in data:
+                failures.check(min(int(v) for v in data["red"]) >= 0,
+                               f"{pwhere}: meshio reads negative colours")
     try:
         props, records = read_ply_raw(ply_path)
     except (ValueError, KeyError, UnicodeDecodeError, struct.error) as error:
@@ -265,17 +295,35 @@ def main(argv):
     (block,), (container,) = scene["fluid_blocks"], scene["containers"]
     rest_density = scene["materials"][block["material"]]["density"]
     expect = {"run_dir": run_dir, "particles": summary["particles"]["total"],
-              "liquid": summary["particles"]["liquid"]}
+              "liquid": summary["particles"]["liquid"], "types": (0, 1, 2, 3),
+              "frozen_ids": set()}
     failures.check(summary["status"] == "completed", f"summary.json: status {summary['status']}")
 
     # The series as ParaView's .pvd reader sees it: part 0 is the particles.
     root = ET.parse(os.path.join(run_dir, "particles.pvd")).getroot()
+    frozen_sets = [d for d in root.iter("DataSet") if d.get("file") == "frames/frozen.vtp"]
+    if frozen_sets:
+        failures.check(all(d.get("part") == "1" for d in frozen_sets),
+                       "particles.pvd: frames/frozen.vtp is not always part 1")
+        frozen, errors = read_vtp(os.path.join(run_dir, "frames", "frozen.vtp"))
+        failures.check(not errors, f"frames/frozen.vtp: vtkXMLPolyDataReader reported {errors}")
+        frozen_types = point_array(frozen, "type", 1, failures, "frames/frozen.vtp")
+        frozen_ids = point_array(frozen, "id", 1, failures, "frames/frozen.vtp")
+        if frozen_types is not None and frozen_ids is not None:
+            failures.check(set(values(frozen_types)) <= {3},
+                           "frames/frozen.vtp holds particles that are not frozen")
+            expect["frozen_ids"] = set(values(frozen_ids))
+            expect["particles"] -= frozen.GetNumberOfPoints()
+            expect["types"] = (0, 1, 2)
     failures.check(root.get("type") == "Collection", f"particles.pvd: type {root.get('type')}")
     sets = [d for d in root.iter("DataSet") if d.get("part", "0") == "0"]
     times = [float(d.get("timestep")) for d in sets]
     files = [d.get("file") for d in sets]
     failures.check(len(sets) == summary["frames"],
                    f"particles.pvd lists {len(sets)} frames, summary.json says {summary['frames']}")
+    failures.check(not frozen_sets or len(frozen_sets) == len(sets),
+                   f"particles.pvd lists frames/frozen.vtp in {len(frozen_sets)} of "
+                   f"{len(sets)} time steps")
     failures.check(times[:1] == [0.0] and all(a < b for a, b in zip(times, times[1:])),
                    f"particles.pvd: times not increasing from 0: {times[:5]}...")
     on_disk = sorted(os.listdir(os.path.join(run_dir, "frames")))

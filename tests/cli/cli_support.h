@@ -21,15 +21,20 @@ struct Result {
   std::string output;
 };
 
-// Runs `upf ARGS` through the shell; `env` ("NAME=value ...") goes in front of the command.
-inline Result run_upf(const std::string& args, const std::string& env = "") {
-  const std::string command = env + " " + std::string(UPF_EXECUTABLE) + " " + args + " 2>&1";
+// Runs `command` through the shell, its stderr with its stdout.
+inline Result run_shell(const std::string& command_line) {
+  const std::string command = command_line + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string output;
   std::array<char, 4096> buffer{};
   while (std::fgets(buffer.data(), int(buffer.size()), pipe)) output += buffer.data();
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// Runs `upf ARGS` through the shell; `env` ("NAME=value ...") goes in front of the command.
+inline Result run_upf(const std::string& args, const std::string& env = "") {
+  return run_shell(env + " " + std::string(UPF_EXECUTABLE) + " " + args);
 }
 
 class Cli : public ::testing::Test {

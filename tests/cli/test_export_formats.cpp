@@ -4,6 +4,7 @@
 // alone writes point clouds and no series; an unknown format is rejected with the known ones.
 #include <cstring>
 #include <iostream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -25,7 +26,8 @@ std::string read_text(const fs::path& path) {
 class ExportFormats : public Cli {
  protected:
   // Water at rest in a small closed tank: a 5 x 6 x 5 lattice of 150 liquid particles on the
-  // tank's floor, inside 884 wall particles. fixed_dt = 1 / fps: the first step ends at the first
+  // tank's floor, inside 884 wall particles, which go once into frames/frozen.vtp and not into
+  // the point clouds. fixed_dt = 1 / fps: the first step ends at the first
   // frame, so frame 1 holds the density the solver evaluated on the initial lattice (see
   // check_vtk_series.py).
   nlohmann::json tank() const {
@@ -40,7 +42,8 @@ class ExportFormats : public Cli {
       "containers": [ { "material": "walls", "min": [0, 0, 0], "max": [0.1, 0.2, 0.1] } ],
       "fluid_blocks": [ { "material": "water", "min": [0, 0, 0], "max": [0.1, 0.12, 0.1] } ],
       "time": { "end": 0.05, "fixed_dt": 0.002 },
-      "output": { "fps": 500, "fields": ["density", "pressure"], "formats": ["vtp", "ply"] }
+      "output": { "fps": 500, "fields": ["density", "pressure"], "formats": ["vtp", "ply"],
+                  "types": { "ply": ["liquid", "rigid", "granular"] } }
     })");
   }
 
@@ -119,6 +122,108 @@ TEST_F(ExportFormats, PlyAloneWritesPointCloudsAndNoSeries) {
   EXPECT_FALSE(fs::exists(out / "frames" / "frame_00000.vtp"));
   EXPECT_FALSE(fs::exists(out / "particles.pvd")) << "the .pvd lists .vtp frames only";
   EXPECT_TRUE(fs::exists(out / "summary.json"));
+}
+
+// Blender 3.4's own PLY importer shows a point cloud without colours (it keeps colours only on
+// faces); scripts/blender_upf.py opens the run with the colours and every property as point
+// attributes, and follows the timeline (tests/cli/check_blender_import.py, in Blender headless).
+TEST_F(ExportFormats, BlenderOpensThePointCloudsWithColoursAndAttributes) {
+  if (run_shell("command -v blender").code != 0) GTEST_SKIP() << "Blender is not installed";
+  auto doc = tank();
+  doc["time"]["end"] = 0.01;
+  doc["fluid_blocks"][0]["min"] = {0, 0.04, 0};  // falls, so frames differ
+  doc["fluid_blocks"][0]["max"] = {0.1, 0.16, 0.1};
+  doc["output"]["formats"] = {"ply"};
+  doc["output"]["ply_up"] = "z";
+  const fs::path out = dir_ / "out";
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const fs::path check = fs::path(UPF_SOURCE_DIR) / "tests" / "cli" / "check_blender_import.py";
+  const Result b = run_shell("blender -b --factory-startup --python-exit-code 1 --python " +
+                             check.string() + " -- " + out.string());
+  EXPECT_EQ(b.code, 0) << b.output;
+  EXPECT_NE(b.output.find("blender import ok"), std::string::npos) << b.output;
+}
+
+// "ply_up": "z" turns the point clouds Z-up for Blender: (x, y, z) -> (x, -z, y), velocities
+// alike; the .vtp keeps the scene's Y-up axes.
+TEST_F(ExportFormats, PlyUpZTurnsThePointCloudsAndNotTheVtp) {
+  auto doc = tank();
+  doc["time"]["end"] = 0.004;
+  doc["output"]["types"] = {{"ply", {"liquid"}}, {"vtp", {"liquid"}}};
+  const fs::path y_up = dir_ / "y", z_up = dir_ / "z";
+  ASSERT_EQ(run_upf("run " + write(doc) + " -o " + y_up.string() + " -j1 -q").code, 0);
+  doc["output"]["ply_up"] = "z";
+  ASSERT_EQ(run_upf("run " + write(doc) + " -o " + z_up.string() + " -j1 -q").code, 0);
+  EXPECT_EQ(read_text(y_up / "frames" / "frame_00002.vtp"),
+            read_text(z_up / "frames" / "frame_00002.vtp"));
+  const std::string a = read_text(y_up / "frames" / "frame_00002.ply"),
+                    b = read_text(z_up / "frames" / "frame_00002.ply");
+  const std::size_t body = a.find("end_header\n") + std::strlen("end_header\n");
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_EQ(body + 150 * 42, a.size()) << "150 liquid particles of 42 bytes (density, pressure)";
+  auto at = [](const std::string& bytes, std::size_t offset) {
+    float v;
+    std::memcpy(&v, bytes.data() + offset, sizeof v);
+    return v;
+  };
+  // Per vertex: x y z (floats at 0, 4, 8), r g b, id, type, material (10 bytes), vx vy vz at 22.
+  for (std::size_t i = 0; i < 150; ++i) {
+    const std::size_t v = body + i * 42;
+    EXPECT_EQ(at(b, v), at(a, v));
+    EXPECT_EQ(at(b, v + 4), -at(a, v + 8));
+    EXPECT_EQ(at(b, v + 8), at(a, v + 4));
+    EXPECT_EQ(at(b, v + 22 + 4), -at(a, v + 22 + 8));
+    EXPECT_EQ(at(b, v + 22 + 8), at(a, v + 22 + 4));
+  }
+}
+
+// /output/types and the layout keys are checked like the rest of the scene.
+TEST_F(ExportFormats, BadLayoutKeysAreRefusedWithTheirPaths) {
+  auto doc = tank();
+  doc["output"]["types"] = {{"ply", {"liquid", "water"}}, {"obj", {"liquid"}}};
+  doc["output"]["compression"] = "gzip";
+  doc["output"]["frozen"] = "sometimes";
+  doc["output"]["ply_up"] = "x";
+  expect_rejected(doc, {"/output/types/ply/1", "unknown particle type \"water\"", "/output/types",
+                        "obj", "/output/compression", "\"gzip\"", "/output/frozen", "\"once\"",
+                        "/output/ply_up", "\"z\""});
+}
+
+// The estimate `upf run` prints before its first step is the bytes the particle files then take
+// uncompressed (less their XML, under 1 kB a file), and an upper bound with compression; over
+// /output/size_warning it warns, naming the key.
+TEST_F(ExportFormats, SizeEstimateIsWhatTheFramesTake) {
+  auto doc = sample();  // the dam break at 5 cm: 1536 liquid and 6396 wall particles
+  doc["time"]["end"] = 0.1;
+  doc["output"]["formats"] = {"vtp", "ply"};
+  doc["output"]["compression"] = "none";
+  auto estimate_and_bytes = [&](const nlohmann::json& scene, const fs::path& out) {
+    const Result r = run_upf("run " + write(scene) + " -o " + out.string() + " -j2");
+    EXPECT_EQ(r.code, 0) << r.output;
+    const std::regex line("frames: (\\d+) x [^=]+= (at most )?([0-9.]+) (B|kB|MB)");
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(r.output, m, line)) << r.output;
+    const double unit = m[4] == "MB" ? 1e6 : (m[4] == "kB" ? 1e3 : 1);
+    double bytes = 0;
+    for (const auto& e : fs::directory_iterator(out / "frames")) bytes += double(e.file_size());
+    return std::pair{std::stod(m[3]) * unit, bytes};
+  };
+  const auto [estimate, bytes] = estimate_and_bytes(doc, dir_ / "raw");
+  EXPECT_GE(bytes, estimate * 0.995);  // three digits printed
+  EXPECT_LE(bytes, estimate * 1.02);
+  doc["output"]["compression"] = "zlib";
+  const auto [bound, packed] = estimate_and_bytes(doc, dir_ / "zlib");
+  EXPECT_DOUBLE_EQ(bound, estimate);
+  EXPECT_LT(packed, bound);
+
+  doc["output"]["size_warning"] = 0.0001;  // 100 kB
+  const Result warned = run_upf("run " + write(doc) + " -o " + (dir_ / "w").string() + " -q");
+  EXPECT_EQ(warned.code, 0) << warned.output;
+  EXPECT_NE(warned.output.find("warning: the frames may take at most"), std::string::npos)
+      << warned.output;
+  EXPECT_NE(warned.output.find(":/output/size_warning (0.0001 GB)"), std::string::npos)
+      << warned.output;
 }
 
 TEST_F(ExportFormats, UnknownFormatListsTheKnownOnes) {

@@ -22,7 +22,8 @@ std::string text_of(const fs::path& p) {
 // The `timestep` attributes of a .pvd, in file order.
 std::vector<double> frame_times(const fs::path& pvd) {
   const std::string xml = text_of(pvd);
-  const std::regex attribute("timestep=\"([^\"]+)\"");
+  // Part 0 of each time step (the frozen walls are part 1 of every step).
+  const std::regex attribute("timestep=\"([^\"]+)\" group=\"\" part=\"0\"");
   std::vector<double> times;
   for (auto it = std::sregex_iterator(xml.begin(), xml.end(), attribute);
        it != std::sregex_iterator(); ++it)

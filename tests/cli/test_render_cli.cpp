@@ -28,7 +28,8 @@ TEST_F(Render, RunWithRenderDrawsEveryFrameAtTheRequestedSize) {
   ASSERT_EQ(r.code, 0) << r.output;
   int frames = 0;
   for (const auto& e : fs::directory_iterator(out / "frames"))
-    frames += e.path().extension() == ".vtp";
+    frames +=
+        e.path().filename().string().rfind("frame_", 0) == 0 && e.path().extension() == ".vtp";
   ASSERT_EQ(frames, 3);
   for (int k = 0; k < frames; ++k) {
     char name[32];

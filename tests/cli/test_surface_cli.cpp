@@ -71,8 +71,9 @@ TEST_F(Surface, EachFrameHasASurfaceMeshListedInTheSeries) {
     EXPECT_GT(ply_count(text, "vertex"), 100) << ply;
     EXPECT_GT(ply_count(text, "face"), 200) << ply;
     EXPECT_GT(fs::file_size(vtp), 0u);
-    // Part 0 the particles, part 1 the surface, at every step.
-    EXPECT_NE(pvd.find("part=\"1\" file=\"frames/surface_" + std::string(stem) + ".vtp\""),
+    // Part 0 the particles, part 1 the frozen walls (written once), part 2 the surface.
+    EXPECT_NE(pvd.find("part=\"1\" file=\"frames/frozen.vtp\""), std::string::npos) << pvd;
+    EXPECT_NE(pvd.find("part=\"2\" file=\"frames/surface_" + std::string(stem) + ".vtp\""),
               std::string::npos)
         << pvd;
   }

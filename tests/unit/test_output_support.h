@@ -5,6 +5,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cstdint>
 #include <cstring>
@@ -75,24 +76,56 @@ struct VtpFile {
   std::string xml;  // everything before the appended data
   std::map<std::string, std::string> piece;
   std::vector<ArrayInfo> arrays;
-  std::string raw;  // the appended block, from the byte after '_'
+  std::string raw;          // the appended block, from the byte after '_'
+  bool compressed = false;  // compressor="vtkZLibDataCompressor"
 
-  // Decodes one array: UInt64 byte count, then the values.
-  template <class T>
-  std::vector<T> decode(const std::string& name) const {
+  std::uint64_t header_at(std::size_t at) const {
+    std::uint64_t v = 0;
+    EXPECT_LE(at + sizeof(v), raw.size());
+    if (at + sizeof(v) <= raw.size()) std::memcpy(&v, raw.data() + at, sizeof(v));
+    return v;
+  }
+
+  // One array's bytes. Raw: a UInt64 byte count, then the bytes. Compressed: UInt64 [number of
+  // blocks, block size, size of the last block, compressed size of each block], then each
+  // block as a zlib stream.
+  std::string bytes_of(const std::string& name) const {
     for (const ArrayInfo& a : arrays) {
       if (a.name != name) continue;
-      std::uint64_t bytes = 0;
-      EXPECT_LE(a.offset + sizeof(bytes), raw.size());
-      std::memcpy(&bytes, raw.data() + a.offset, sizeof(bytes));
-      EXPECT_EQ(bytes % sizeof(T), 0u);
-      EXPECT_LE(a.offset + sizeof(bytes) + bytes, raw.size());
-      std::vector<T> values(bytes / sizeof(T));
-      if (bytes > 0) std::memcpy(values.data(), raw.data() + a.offset + sizeof(bytes), bytes);
-      return values;
+      if (!compressed) {
+        const std::uint64_t bytes = header_at(a.offset);
+        EXPECT_LE(a.offset + sizeof(bytes) + bytes, raw.size());
+        return raw.substr(a.offset + sizeof(bytes), bytes);
+      }
+      const std::uint64_t blocks = header_at(a.offset), block = header_at(a.offset + 8),
+                          last = header_at(a.offset + 16);
+      std::size_t at = a.offset + 24 + blocks * 8;
+      std::string out;
+      for (std::uint64_t k = 0; k < blocks; ++k) {
+        const std::uint64_t packed = header_at(a.offset + 24 + k * 8);
+        uLongf size = uLongf(k + 1 == blocks && last != 0 ? last : block);
+        std::string part(size, '\0');
+        EXPECT_EQ(uncompress(reinterpret_cast<Bytef*>(part.data()), &size,
+                             reinterpret_cast<const Bytef*>(raw.data() + at), uLong(packed)),
+                  Z_OK)
+            << name << " block " << k;
+        out += part.substr(0, size);
+        at += packed;
+      }
+      return out;
     }
     ADD_FAILURE() << "no array named " << name;
     return {};
+  }
+
+  // Decodes one array into values of type T.
+  template <class T>
+  std::vector<T> decode(const std::string& name) const {
+    const std::string bytes = bytes_of(name);
+    EXPECT_EQ(bytes.size() % sizeof(T), 0u);
+    std::vector<T> values(bytes.size() / sizeof(T));
+    if (!bytes.empty()) std::memcpy(values.data(), bytes.data(), bytes.size());
+    return values;
   }
   const ArrayInfo* find(const std::string& name) const {
     for (const ArrayInfo& a : arrays)
@@ -146,6 +179,10 @@ inline VtpFile parse_vtp(const fs::path& p) {
   EXPECT_EQ(head.at("type"), "PolyData");
   EXPECT_EQ(head.at("byte_order"), "LittleEndian");
   EXPECT_EQ(head.at("header_type"), "UInt64");
+  f.compressed = head.count("compressor") != 0;
+  if (f.compressed) {
+    EXPECT_EQ(head.at("compressor"), "vtkZLibDataCompressor");
+  }
 
   const std::size_t piece = f.xml.find("<Piece");
   f.piece = attributes(f.xml.substr(piece, f.xml.find('>', piece) - piece));
