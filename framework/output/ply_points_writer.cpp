@@ -137,7 +137,11 @@ void write_ply_points(const std::filesystem::path& path, const Particles& partic
                       const std::vector<std::string>& fields) {
   const std::size_t n = particles.size();
   check_array_sizes(particles, "write_ply_points");
-  const auto [header, record, extras] = layout_for(particles, fields);
+  // A named layout, not a structured binding: clang 14 cannot capture bindings in the lambda.
+  const Layout layout = layout_for(particles, fields);
+  const std::string& header = layout.header;
+  const std::size_t record = layout.record;
+  const std::vector<Extra>& extras = layout.extras;
 
   write_file_atomically(path, [&](std::ostream& out) {
     out.write(header.data(), std::streamsize(header.size()));
