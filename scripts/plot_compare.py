@@ -126,7 +126,7 @@ def plot_probe(report, runs, spec, path):
     if not any(math.isfinite(v) for run in runs for v in run.probes.get(spec["probe"], [])):
         axes.text(0.5, 0.5, "no value: the probe saw no liquid", transform=axes.transAxes,
                   ha="center", va="center", fontsize=14, color="grey")
-    axes.set_ylabel(spec["probe"])
+    axes.set_ylabel(spec.get("label") or spec["probe"])
     finish(report, figure, [axes], spec["title"], path)
 
 

@@ -3,6 +3,8 @@
 #include <ctime>
 #include <stdexcept>
 
+#include "framework/run/probes.h"
+
 namespace upf {
 
 namespace {
@@ -25,7 +27,10 @@ Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry
   c.source = scene.source.string();
   c.end_time = options.end_time.value_or(scene.world.time.end);
   c.date = utc_now_iso8601();
-  for (const auto& p : scene.probes) c.probes.push_back(p.name);
+  for (const auto& p : scene.probes) {
+    c.probes.push_back(p.name);
+    c.probe_units.push_back(probe_unit(p.kind));
+  }
 
   for (std::size_t i = 0; i < plan.size(); ++i) {
     if (options.on_run_start) options.on_run_start(plan[i], i, plan.size());

@@ -30,7 +30,13 @@ struct Comparison {
   double end_time = 0;
   std::string date;  // UTC, ISO 8601: when the comparison started
   std::vector<std::string> probes;
+  std::vector<std::string> probe_units;  // one per probe: "m", "Pa"
   std::vector<CompareRow> rows;
+
+  // "name [unit]", the label of probe `i` in tables and on plot axes.
+  std::string probe_label(std::size_t i) const {
+    return i < probe_units.size() ? probes[i] + " [" + probe_units[i] + "]" : probes[i];
+  }
 
   bool any_unstable() const {
     for (const auto& r : rows)

@@ -18,16 +18,16 @@ std::string file_stem(const std::string& name) {
 
 std::vector<PlotSpec> plan_plots(const Comparison& c) {
   std::vector<PlotSpec> plots = {
-      {"density_error.png", "Density error (average and maximum) vs time", "density_error", ""},
-      {"dt.png", "Time step vs time", "dt", ""},
+      {"density_error.png", "Density error (average and maximum) vs time", "density_error", "", ""},
+      {"dt.png", "Time step vs time", "dt", "", ""},
       {"accuracy_cost.png",
        "Largest density error vs wall seconds per simulated second, one point per solver",
-       "accuracy_cost", ""}};
+       "accuracy_cost", "", ""}};
   for (std::size_t i = 0; i < c.probes.size(); ++i) {
     const std::string& name = c.probes[i];
     // The index keeps two names that sanitise alike ("a b", "a_b") apart.
     plots.push_back({"probe_" + std::to_string(i + 1) + "_" + file_stem(name) + ".png",
-                     "Probe " + name + " vs time", "probe", name});
+                     "Probe " + name + " vs time", "probe", name, c.probe_label(i)});
   }
   return plots;
 }

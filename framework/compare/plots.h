@@ -1,7 +1,8 @@
 // The comparison's PNG plots, one curve per solver: density error, time step, and each probe
 // against simulated time; and accuracy against cost, one point per solver (the largest density
-// error against wall seconds per simulated second). scripts/plot_compare.py draws them with matplotlib from report.json and
-// the runs' metrics.csv and probes.csv; this side names the files and checks they appeared.
+// error against wall seconds per simulated second). scripts/plot_compare.py draws them with
+// matplotlib from report.json and the runs' metrics.csv and probes.csv; this side names the files
+// and checks they appeared.
 #pragma once
 
 #include <filesystem>
@@ -21,6 +22,7 @@ struct PlotSpec {
   std::string title;
   std::string kind;   // "density_error", "dt", "probe" or "accuracy_cost"
   std::string probe;  // kind "probe": the probe's name
+  std::string label;  // kind "probe": the y axis, "name [unit]"
 };
 
 std::vector<PlotSpec> plan_plots(const Comparison& c);

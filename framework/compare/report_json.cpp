@@ -30,6 +30,7 @@ nlohmann::json report_json(const Comparison& c, const std::vector<PlotSpec>& plo
                       {"threads", c.threads},
                       {"end_time_s", c.end_time},
                       {"probes", c.probes},
+                      {"probe_units", c.probe_units},
                       {"particles", {{"liquid", c.liquid_particles}, {"total", c.total_particles}}},
                       {"rows", nlohmann::json::array()}};
   for (const auto& row : c.rows) j["rows"].push_back(row_json(row));
@@ -45,7 +46,8 @@ nlohmann::json report_json(const Comparison& c, const std::vector<PlotSpec>& plo
         {{"file", s.file},
          {"title", s.title},
          {"kind", s.kind},
-         {"probe", s.probe.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.probe)}});
+         {"probe", s.probe.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.probe)},
+         {"label", s.label.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.label)}});
   j["plots"] = p;
   return j;
 }

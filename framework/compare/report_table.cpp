@@ -35,7 +35,7 @@ ReportTable make_report_table(const Comparison& c) {
               "max density error [%]",
               "wall s / sim s",
               "particle-steps/s"};
-  for (const auto& p : c.probes) t.header.push_back(p);
+  for (std::size_t i = 0; i < c.probes.size(); ++i) t.header.push_back(c.probe_label(i));
   for (const auto& row : c.rows) {
     const RunResult& r = row.result;
     std::vector<std::string> cells = {row.solver,

@@ -14,6 +14,10 @@ bool inside(const Box& box, const Vec3& x) {
 }
 }  // namespace
 
+const char* probe_unit(ProbeKind kind) {
+  return kind == ProbeKind::Pressure ? "Pa" : "m";
+}
+
 double evaluate_probe(const ProbeDesc& probe, const Particles& particles, Real spacing) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::size_t n = particles.size();

@@ -14,4 +14,8 @@ namespace upf {
 
 double evaluate_probe(const ProbeDesc& probe, const Particles& particles, Real spacing);
 
+// The SI unit of what a probe of `kind` measures: "m" for extents and heights, "Pa" for
+// pressures.
+const char* probe_unit(ProbeKind kind);
+
 }  // namespace upf

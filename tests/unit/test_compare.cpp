@@ -182,6 +182,20 @@ TEST_F(CompareLibrary, AnUnstableSolverGetsItsRowAndTheOthersComplete) {
       << "no liquid reaches the far wall by 0.1 s: NaN";
   EXPECT_EQ(report["plots"]["status"], "missing");
   EXPECT_TRUE(fs::exists(out / "report.html"));
+  // Probes carry their units: the table's column, report.json and the plot's axis label.
+  EXPECT_NE(md.str().find("pressure_far_wall_bottom [Pa]"), std::string::npos) << md.str();
+  const auto& probes = report["probes"];
+  const auto& units = report["probe_units"];
+  ASSERT_EQ(probes.size(), units.size());
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const std::string name = probes[i];
+    EXPECT_EQ(units[i], name.rfind("pressure", 0) == 0 ? "Pa" : "m") << name;
+  }
+  bool labelled = false;
+  for (const auto& f : report["plots"]["files"])
+    if (f["kind"] == "probe" && f["probe"] == "pressure_far_wall_bottom")
+      labelled = f["label"] == "pressure_far_wall_bottom [Pa]";
+  EXPECT_TRUE(labelled) << report["plots"].dump();
   fs::remove_all(out);
 }
 
