@@ -1,5 +1,6 @@
 # Front doors. Both install what is missing first (scripts/install-deps), then build with CMake.
-#   make demo   build Release, run samples/dam_break.json into out/dam_break/ and draw its frames
+#   make demo   build Release, run samples/dam_break.json into out/dam_break/ with surface meshes
+#               and draw its frames with the liquid as water
 #               (out/dam_break/render/: a PNG per frame, and an MP4)
 #   make test   build Release and run every test with ctest
 #   make asan   build with ASan+UBSan (clang) and run the unit tests and a short run of each fuzz target
@@ -17,7 +18,8 @@ build: deps
 	cmake --build --preset release -j $(JOBS)
 
 demo: build
-	./build/release/apps/upf/upf run samples/dam_break.json --out out/dam_break --render
+	./build/release/apps/upf/upf run samples/dam_break.json --out out/dam_break --render \
+	  --set '/output/formats=["vtp","surface"]' --set /render/surface=true
 
 test: build
 	ctest --preset release -j $(JOBS)

@@ -137,6 +137,10 @@ void append_points(PolyData& into, const PolyData& more) {
 }
 }  // namespace
 
+bool has_liquid_surface(const FrameData& frame) {
+  return !frame.surfaces.empty();
+}
+
 FrameData read_frame(const RunFrame& f) {
   FrameData data;
   data.time = f.time;
@@ -145,6 +149,8 @@ FrameData read_frame(const RunFrame& f) {
     PolyData part = read_vtp(f.parts[k]);
     if (part.triangles.empty() && part.point_array("type"))
       append_points(data.particles, part);  // particles of their own file (frames/frozen.vtp)
+    else if (f.parts[k].filename().string().rfind("surface_", 0) == 0)
+      data.surfaces.push_back(std::move(part));  // FrameWriter's liquid surface
     else
       data.meshes.push_back(std::move(part));
   }
@@ -161,6 +167,20 @@ Camera camera_for_particles(const PolyData& particles, const Eigen::Vector3d& up
   return frame_box(lo, hi, up, aspect);
 }
 
+namespace {
+// The water's absorption is set per length of its bounding box's diagonal, so a 10 cm tank and
+// a 10 m pool both look like deep water rather than clear film or ink.
+float water_depth_scale(const TriangleSet& water) {
+  if (water.vertices.empty()) return 1.f;
+  Eigen::Vector3f lo = water.vertices.front(), hi = lo;
+  for (const auto& v : water.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  return std::max(1e-6f, (hi - lo).norm());
+}
+}  // namespace
+
 Image draw_frame(const FrameData& frame, const PictureContext& context) {
   const RenderSettings& settings = context.settings;
   const PolyData& p = frame.particles;
@@ -172,6 +192,7 @@ Image draw_frame(const FrameData& frame, const PictureContext& context) {
   bool have_body_meshes = false;
   for (const PolyData& m : frame.meshes) have_body_meshes |= m.cell_array("body") != nullptr;
   const VtpArray* material = p.point_array("material");
+  bool coloured_by_field = false;  // a particle drawn takes its colour from the scale
 
   for (std::size_t i = 0; i < p.points.size(); ++i) {
     const ParticleType type = type_of(p, i);
@@ -185,7 +206,10 @@ Image draw_frame(const FrameData& frame, const PictureContext& context) {
       }
     } else if (type == ParticleType::Rigid && have_body_meshes) {
       continue;  // the body's mesh stands for its boundary particles
+    } else if (type == ParticleType::Liquid && settings.surface) {
+      continue;  // the water surface stands for the liquid
     } else if (context.scale) {
+      coloured_by_field = true;
       const double v = field_value(p, context.scale->field, i).value_or(std::nan(""));
       const double span = context.scale->high - context.scale->low;
       c = viridis(span > 0 ? (v - context.scale->low) / span : 0.5);
@@ -195,16 +219,21 @@ Image draw_frame(const FrameData& frame, const PictureContext& context) {
     scene.opaque.centres.push_back(p.points[i]);
     scene.opaque.colours.push_back(c);
   }
-  for (const PolyData& m : frame.meshes) {
-    const std::uint32_t base = std::uint32_t(scene.meshes.vertices.size());
-    scene.meshes.vertices.insert(scene.meshes.vertices.end(), m.points.begin(), m.points.end());
-    const bool body = m.cell_array("body") != nullptr;
-    for (const auto& t : m.triangles) {
-      scene.meshes.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-      scene.meshes.colours.push_back(
-          type_colour(body ? ParticleType::Rigid : ParticleType::Liquid));
+  // Bodies as meshes; the liquid's surface as water in surface mode (otherwise the particles
+  // show the liquid, and the surface is not drawn).
+  auto add_meshes = [](const std::vector<PolyData>& meshes, TriangleSet& set, Colour colour) {
+    for (const PolyData& m : meshes) {
+      const std::uint32_t base = std::uint32_t(set.vertices.size());
+      set.vertices.insert(set.vertices.end(), m.points.begin(), m.points.end());
+      for (const auto& t : m.triangles) {
+        set.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        set.colours.push_back(colour);
+      }
     }
-  }
+  };
+  add_meshes(frame.meshes, scene.meshes, type_colour(ParticleType::Rigid));
+  if (settings.surface) add_meshes(frame.surfaces, scene.water, type_colour(ParticleType::Liquid));
+  scene.water_scale = water_depth_scale(scene.water);
 
   TraceSettings trace;
   trace.width = settings.width;
@@ -219,7 +248,8 @@ Image draw_frame(const FrameData& frame, const PictureContext& context) {
   std::snprintf(time_text, sizeof time_text, "t = %.3f s", frame.time);
   image.draw_text(4 * font, 4 * font, context.title, ink, font);
   image.draw_text(4 * font, 6 * font + Image::text_height(font), time_text, ink, font);
-  if (context.scale) draw_colour_bar(image, *context.scale, font);
+  // With the liquid drawn as water, the bar stays only for what it colours (grains, say).
+  if (context.scale && coloured_by_field) draw_colour_bar(image, *context.scale, font);
   return image;
 }
 

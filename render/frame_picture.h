@@ -14,16 +14,21 @@
 
 namespace upf::render {
 
-// What a frame holds once read: the particles, and the meshes of its other parts (bodies).
+// What a frame holds once read: the particles, the meshes of its other parts (bodies), and the
+// liquid's surface meshes (frames/surface_NNNNN.vtp).
 struct FrameData {
   double time = 0;
   PolyData particles;
   std::vector<PolyData> meshes;
+  std::vector<PolyData> surfaces;
 };
 
+bool has_liquid_surface(const FrameData& frame);
+
 // Reads a saved frame: its first part is the particles, and so is any other part that has a
-// "type" point array and no triangles (the frozen particles, written once); the others are
-// meshes. Throws InputError naming a damaged file.
+// "type" point array and no triangles (the frozen particles, written once); files named
+// surface_* are the liquid's surface; the others are bodies' meshes. Throws InputError naming a
+// damaged file.
 FrameData read_frame(const RunFrame& frame);
 
 // The field values a picture colours by, mapped onto [low, high].

@@ -2,13 +2,16 @@
 
 #include <embree3/rtcore.h>
 #include <omp.h>
+#include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace upf::render {
 
@@ -71,6 +74,25 @@ RTCRayHit make_ray(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float tfa
   return rh;
 }
 
+// Schlick's approximation of the Fresnel reflectance at an air-water interface (n = 1.33).
+float schlick(float cos_incidence) {
+  constexpr float r0 = 0.02f;  // ((1.33 - 1) / (1.33 + 1))^2
+  const float m = 1.f - std::clamp(cos_incidence, 0.f, 1.f);
+  return r0 + (1.f - r0) * m * m * m * m * m;
+}
+
+// Area-weighted vertex normals of a closed mesh, outward for counter-clockwise triangles.
+std::vector<Eigen::Vector3f> vertex_normals(const TriangleSet& set) {
+  std::vector<Eigen::Vector3f> n(set.vertices.size(), Eigen::Vector3f::Zero());
+  for (const auto& t : set.triangles) {
+    const Eigen::Vector3f face =
+        (set.vertices[t[1]] - set.vertices[t[0]]).cross(set.vertices[t[2]] - set.vertices[t[0]]);
+    for (const std::uint32_t v : t) n[v] += face;
+  }
+  for (auto& v : n) v = v.norm() > 0 ? v.normalized() : Eigen::Vector3f::UnitY();
+  return n;
+}
+
 class Tracer {
  public:
   Tracer(const RenderScene& scene, const Camera& camera, const TraceSettings& settings)
@@ -83,11 +105,15 @@ class Tracer {
                                std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
     opaque_.reset(rtcNewScene(device_.get()));
     glass_.reset(rtcNewScene(device_.get()));
+    water_.reset(rtcNewScene(device_.get()));
     add_spheres(device_.get(), opaque_.get(), scene.opaque);
     add_triangles(device_.get(), opaque_.get(), scene.meshes);
     add_spheres(device_.get(), glass_.get(), scene.glass);
+    add_triangles(device_.get(), water_.get(), scene.water);
     rtcCommitScene(opaque_.get());
     rtcCommitScene(glass_.get());
+    rtcCommitScene(water_.get());
+    water_normals_ = vertex_normals(scene.water);
     if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE)
       throw std::runtime_error("Embree could not build the scene (error " +
                                std::to_string(int(rtcGetDeviceError(device_.get()))) + ")");
@@ -105,31 +131,91 @@ class Tracer {
   }
 
  private:
-  Colour background(const Ray& ray) const {
+  Colour background(const Eigen::Vector3f& direction) const {
     // A soft sky: lighter towards the top of the picture.
-    const float s = 0.5f * (1.f + ray.direction.dot(rays_.up()));
+    const float s = 0.5f * (1.f + direction.dot(rays_.up()));
     return (1 - s) * Colour(0.74f, 0.77f, 0.81f) + s * Colour(0.95f, 0.96f, 0.98f);
+  }
+
+  // What a ray from `origin` along `direction` sees: opaque things, the sky, and water, whose
+  // surface splits the ray into a reflected and a refracted one (up to kWaterDepth surfaces).
+  // `inside`: the ray runs through water, which absorbs along it. Sets `first_hit` to the
+  // distance of the first thing hit (infinity for the sky).
+  Colour trace(const Eigen::Vector3f& origin, const Eigen::Vector3f& direction, bool inside,
+               int depth, RTCIntersectContext& context, float& first_hit) const {
+    RTCRayHit rh = make_ray(origin, direction, std::numeric_limits<float>::infinity());
+    rtcIntersect1(opaque_.get(), &context, &rh);
+    const float opaque_t = rh.ray.tfar;
+    const bool opaque_hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit wh = make_ray(origin, direction, opaque_hit ? opaque_t : rh.ray.tfar);
+    if (!scene_.water.triangles.empty()) rtcIntersect1(water_.get(), &context, &wh);
+    const bool water_hit = wh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    first_hit = water_hit ? wh.ray.tfar : opaque_t;
+
+    Colour c;
+    if (water_hit && depth < kWaterDepth) {
+      c = water_surface(origin, direction, wh, depth, context);
+    } else if (opaque_hit) {
+      Eigen::Vector3f n(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+      n.normalize();
+      if (n.dot(direction) > 0) n = -n;  // triangles are lit from whichever side we see
+      const Colour base = rh.hit.geomID == 0 ? scene_.opaque.colours[rh.hit.primID]
+                                             : scene_.meshes.colours[rh.hit.primID];
+      const Eigen::Vector3f p = origin + opaque_t * direction;
+      c = shade(base, p + 0.05f * scene_.opaque.radius * n, n, direction, context);
+    } else {
+      c = background(direction);
+    }
+    if (inside && std::isfinite(first_hit)) {
+      // Beer-Lambert along the path inside, with the light scattered in tending to the deep
+      // colour: red goes first, so depth turns the water blue.
+      const Eigen::Array3f kept =
+          (-scene_.water_absorption * (first_hit / scene_.water_scale)).exp();
+      c = (kept * c.array() + (1.f - kept) * scene_.water_deep.array()).matrix();
+    }
+    return c;
+  }
+
+  // A ray meets the water's surface: Fresnel-weighted reflection and refraction.
+  Colour water_surface(const Eigen::Vector3f& origin, const Eigen::Vector3f& d, const RTCRayHit& wh,
+                       int depth, RTCIntersectContext& context) const {
+    const auto& t = scene_.water.triangles[wh.hit.primID];
+    const float u = wh.hit.u, v = wh.hit.v;
+    Eigen::Vector3f n =
+        ((1 - u - v) * water_normals_[t[0]] + u * water_normals_[t[1]] + v * water_normals_[t[2]])
+            .normalized();
+    const Eigen::Vector3f p = origin + wh.ray.tfar * d;
+    // Entering or leaving: by the side of the (outward) surface the ray comes from.
+    const bool entering = n.dot(d) < 0;
+    if (!entering) n = -n;  // n now faces the ray
+    const float cos_i = -n.dot(d);
+    const float eta = entering ? 1.f / 1.33f : 1.33f;
+    const float k = 1.f - eta * eta * (1.f - cos_i * cos_i);
+    const float offset = 1e-4f * scene_.water_scale;
+    const Eigen::Vector3f reflected = (d + 2.f * cos_i * n).normalized();
+    const float fresnel = k < 0 ? 1.f : schlick(entering ? cos_i : std::sqrt(k));
+    float ignored = 0;
+    Colour reflection;
+    if (entering) {
+      // Outside, the reflection is of the sky, with the key light's glint.
+      const float glint = std::pow(std::max(0.f, reflected.dot(light_)), 400.f);
+      reflection = background(reflected) + Colour::Constant(3.f * glint);
+    } else {
+      reflection = trace(p + offset * n, reflected, true, depth + 1, context, ignored);
+    }
+    if (k < 0) return reflection;  // total internal reflection
+    const Eigen::Vector3f refracted = (eta * d + (eta * cos_i - std::sqrt(k)) * n).normalized();
+    const Colour transmission =
+        trace(p - offset * n, refracted, entering, depth + 1, context, ignored);
+    return fresnel * reflection + (1.f - fresnel) * transmission;
   }
 
   Colour sample(double x, double y) const {
     const Ray ray = rays_.through(x, y);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rh = make_ray(ray.origin, ray.direction, std::numeric_limits<float>::infinity());
-    rtcIntersect1(opaque_.get(), &context, &rh);
-    Colour c;
-    const float hit_t = rh.ray.tfar;
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
-      c = background(ray);
-    } else {
-      Eigen::Vector3f n(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-      n.normalize();
-      if (n.dot(ray.direction) > 0) n = -n;  // triangles are lit from whichever side we see
-      const Colour base = rh.hit.geomID == 0 ? scene_.opaque.colours[rh.hit.primID]
-                                             : scene_.meshes.colours[rh.hit.primID];
-      const Eigen::Vector3f p = ray.origin + hit_t * ray.direction;
-      c = shade(base, p + 0.05f * scene_.opaque.radius * n, n, ray.direction, context);
-    }
+    float hit_t = 0;
+    Colour c = trace(ray.origin, ray.direction, false, 0, context, hit_t);
     if (!scene_.glass.centres.empty()) {
       RTCRay through = make_ray(ray.origin, ray.direction, hit_t).ray;
       rtcOccluded1(glass_.get(), &context, &through);
@@ -157,8 +243,11 @@ class Tracer {
   CameraRays rays_;
   TraceSettings settings_;
   DevicePtr device_;
-  ScenePtr opaque_, glass_;
+  ScenePtr opaque_, glass_, water_;
+  std::vector<Eigen::Vector3f> water_normals_;
   Eigen::Vector3f light_;
+  // Water surfaces one ray passes on its way: in and out of a splash, and a reflection inside.
+  static constexpr int kWaterDepth = 6;
 };
 
 }  // namespace

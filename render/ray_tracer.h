@@ -1,7 +1,10 @@
 // Draws spheres and triangle meshes with Embree (Wald et al. 2014, "Embree: a kernel framework
 // for efficient CPU ray tracing"; Debian's libembree 3): one primary ray per sample, Lambert
-// shading with a soft headlight, shadows from one directional key light, and "glass" spheres
-// that only tint what lies behind them (the near walls of a tank, so the liquid stays visible).
+// shading with a soft headlight, shadows from one directional key light, "glass" spheres that
+// only tint what lies behind them (the near walls of a tank, so the liquid stays visible), and
+// water: a closed surface mesh, smooth-shaded, that reflects the sky by Schlick's Fresnel
+// approximation (Schlick 1994) and refracts by Snell's law with n = 1.33, absorbing along the
+// path inside by Beer-Lambert, red first, so depth turns it blue.
 //
 // Why a ray tracer rather than OpenGL: it needs no display, no GPU and no GL context (EGL or
 // OSMesa set-up differs per machine), renders a particle as an exact sphere, and gives shadows,
@@ -35,6 +38,12 @@ struct RenderScene {
   SphereSet opaque;  // liquid, grains, bodies' particles, walls seen from inside
   SphereSet glass;   // near walls: tint only, cast no shadow
   TriangleSet meshes;
+  // The liquid's surface, a closed mesh with outward (counter-clockwise) triangles; it casts no
+  // shadow. Absorption is per water_scale metres (the water's extent), so any size looks alike.
+  TriangleSet water;
+  float water_scale = 1.f;
+  Eigen::Array3f water_absorption{9.0f, 3.2f, 1.6f};  // per water_scale, red, green, blue
+  Colour water_deep{0.02f, 0.16f, 0.30f};  // what light scattered inside the water tends to
   Colour glass_tint{0.82f, 0.86f, 0.92f};
   float glass_opacity = 0.18f;
 };

@@ -84,6 +84,7 @@ RenderOutcome render_run(const RenderRequest& request) {
   if (o.color_by) settings.color_by = *o.color_by;
   if (o.range) settings.range = o.range;
   if (o.walls) settings.walls = *o.walls;
+  if (o.surface) settings.surface = *o.surface;
 
   std::vector<RunFrame> frames = read_run_frames(request.run_dir);
   const int last = request.last_frame < 0 ? int(frames.size()) - 1
@@ -93,6 +94,10 @@ RenderOutcome render_run(const RenderRequest& request) {
   frames = std::vector<RunFrame>(frames.begin() + request.first_frame, frames.begin() + last + 1);
 
   const FrameData first = read_frame(frames.front());
+  if (settings.surface && !has_liquid_surface(first))
+    throw InputError(request.run_dir.string(),
+                     "--surface draws the liquid's surface meshes, and this run has none: add "
+                     "\"surface\" to the scene's /output/formats and run it again");
   PictureContext context;
   std::string range_source;
   context.settings = settings;

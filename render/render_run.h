@@ -19,6 +19,7 @@ struct RenderOverrides {
   std::optional<std::string> color_by;
   std::optional<std::array<double, 2>> range;
   std::optional<WallStyle> walls;
+  std::optional<bool> surface;
 };
 
 struct RenderRequest {

@@ -62,8 +62,9 @@ std::pair<int, int> parse_picture_size(const std::string& text, const std::strin
 void read_render_settings(const nlohmann::json& node, const std::string& path, JsonInput& input,
                           RenderSettings& settings) {
   if (!input.expect_object(node, path)) return;
-  input.check_keys(node, path,
-                   {"camera", "width", "height", "samples", "color_by", "range", "walls"});
+  input.check_keys(
+      node, path,
+      {"camera", "width", "height", "samples", "color_by", "range", "walls", "surface"});
   if (auto it = node.find("camera"); it != node.end()) {
     const std::string where = JsonInput::child(path, "camera");
     if (input.expect_object(*it, where)) {
@@ -114,6 +115,13 @@ void read_render_settings(const nlohmann::json& node, const std::string& path, J
     else
       input.problem(JsonInput::child(path, "walls"),
                     "unknown wall style \"" + *w + "\" (known: \"glass\", \"solid\", \"hidden\")");
+  }
+  if (auto it = node.find("surface"); it != node.end()) {
+    if (it->is_boolean())
+      settings.surface = it->get<bool>();
+    else
+      input.problem(JsonInput::child(path, "surface"),
+                    "expected true or false, found " + json_type_name(*it));
   }
   // Whole numbers only: the size is a pixel count.
   for (const char* key : {"width", "height", "samples"}) {

@@ -29,6 +29,9 @@ struct RenderSettings {
   std::string color_by = "type";
   std::optional<std::array<double, 2>> range;  // absent: the 1st..99th percentile over the run
   WallStyle walls = WallStyle::Glass;          // frozen particles on the camera's side
+  // Water: the liquid drawn as its surface mesh ("surface" frames), shaded as water, and its
+  // particles hidden. Off: the liquid's particles, and no surface mesh.
+  bool surface = false;
 };
 
 // "glass", "solid", "hidden": the names scene files, `upf render --walls` and the viewer use.

@@ -4,7 +4,8 @@
 // appended data, header_type).
 //
 // It reads what upf writes: one <Piece>, little-endian, UInt64 block headers, appended data raw
-// or zlib-compressed, polygons that are all triangles. Any other layout is reported as unsupported, naming the file.
+// or zlib-compressed, polygons that are all triangles. Any other layout is reported as unsupported,
+// naming the file.
 #pragma once
 
 #include <Eigen/Core>

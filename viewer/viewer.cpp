@@ -235,7 +235,7 @@ class ViewLoop {
  private:
   const render::FrameData& frame() const { return run_ ? run_->frame() : live_->frame(); }
 
-  // Which field colours the particles, and how walls are drawn.
+  // Which field colours the particles, how walls are drawn, and the liquid as water.
   void look_choices() {
     const std::vector<std::string> choices = render::colour_choices(frame().particles);
     if (ImGui::BeginCombo("colour by", colour_by_.c_str())) {
@@ -254,6 +254,10 @@ class ViewLoop {
         }
       ImGui::EndCombo();
     }
+    // A saved run's "surface" frames: the liquid as water (render --surface).
+    if (render::has_liquid_surface(frame()) &&
+        ImGui::Checkbox("water surface", &context_.settings.surface))
+      dirty_ = true;
   }
 
   // The frame shown, or the live world's last step; a live scene's error in red.

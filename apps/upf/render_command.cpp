@@ -40,6 +40,7 @@ render::RenderOverrides overrides_of(const RenderArgs& args) {
     o.range = std::array<double, 2>{args.range[0], args.range[1]};
   }
   if (!args.walls.empty()) o.walls = render::wall_style_named(args.walls);
+  if (args.surface) o.surface = true;
   return o;
 }
 
@@ -55,6 +56,9 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
       ->delimiter(',');
   command.add_option("--walls", args.walls, "near walls: glass (default), solid or hidden")
       ->check(CLI::IsMember({"glass", "solid", "hidden"}));
+  command.add_flag("--surface", args.surface,
+                   "draw the liquid as water: its surface meshes (\"surface\" frames), "
+                   "particles hidden");
   command.add_flag("--no-video", args.no_video, "pictures only, no MP4");
 }
 

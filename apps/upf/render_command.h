@@ -16,6 +16,7 @@ struct RenderArgs {
   std::optional<int> samples;
   std::vector<double> range;
   std::string walls;
+  bool surface = false;
   std::string frames;  // "N" or "A:B" (either end may be empty)
   bool no_video = false;
   int threads = 0;

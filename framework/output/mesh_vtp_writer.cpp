@@ -60,7 +60,8 @@ void check_input(const std::vector<MeshPiece>& pieces,
 }  // namespace
 
 void write_mesh_vtp(const std::filesystem::path& path, const std::vector<MeshPiece>& pieces,
-                    const std::vector<std::pair<std::string, std::vector<double>>>& piece_fields) {
+                    const std::vector<std::pair<std::string, std::vector<double>>>& piece_fields,
+                    vtk_xml::Compression compression) {
   check_input(pieces, piece_fields);
 
   std::size_t point_count = 0;
@@ -108,7 +109,8 @@ void write_mesh_vtp(const std::filesystem::path& path, const std::vector<MeshPie
                            {"Points", {make_array("Points", "Float64", 3, points)}},
                            {"Polys",
                             {make_array("connectivity", "Int64", 1, connectivity),
-                             make_array("offsets", "Int64", 1, offsets)}}});
+                             make_array("offsets", "Int64", 1, offsets)}}},
+                          compression);
 }
 
 }  // namespace upf

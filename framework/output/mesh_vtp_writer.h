@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/core/mesh_piece.h"
+#include "framework/output/vtk_appended_data.h"
 
 namespace upf {
 
@@ -25,8 +26,10 @@ namespace upf {
 // "speed"). An empty `pieces` gives a valid file with 0 points and 0 polys.
 // Throws std::invalid_argument, before touching the file, for a triangle index out of range, a
 // field whose size differs from pieces.size(), or a field named "body" or named twice; throws
-// OutputError if the file cannot be written; the directory must exist.
+// OutputError if the file cannot be written; the directory must exist. `compression` as for
+// write_vtp.
 void write_mesh_vtp(const std::filesystem::path& path, const std::vector<MeshPiece>& pieces,
-                    const std::vector<std::pair<std::string, std::vector<double>>>& piece_fields);
+                    const std::vector<std::pair<std::string, std::vector<double>>>& piece_fields,
+                    vtk_xml::Compression compression = vtk_xml::Compression::none);
 
 }  // namespace upf

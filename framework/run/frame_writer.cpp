@@ -134,7 +134,7 @@ std::string FrameWriter::write_surface(const Particles& particles) const {
     write_mesh_ply(ply, mesh);
   }
   const std::string vtp = frame_file("frames/surface_%05d.vtp", frames_);
-  write_mesh_vtp(out_dir_ / vtp, {mesh}, {});
+  write_mesh_vtp(out_dir_ / vtp, {mesh}, {}, compression_);
   return vtp;
 }
 

@@ -102,5 +102,40 @@ TEST_F(Render, BadRequestsAreBadInputNamingTheCulprit) {
   expect_rejected(doc, {"/render/camera/target", "/render/walls", "fog"});
 }
 
+// --surface draws the liquid as water: its surface meshes ("surface" frames) shaded with
+// refraction and absorption, the liquid's particles hidden. The same frame with the particles
+// coloured by a speed range above every speed is viridis' dark purple, with no blue at all; as
+// water, a good part of the tank is blue. A run without surface meshes is refused, naming the
+// scene key to add.
+TEST_F(Render, SurfaceDrawsTheLiquidAsWater) {
+  auto doc = sample();
+  doc["time"]["end"] = 0.1;
+  doc["output"]["fps"] = 10;
+  doc["output"]["formats"] = {"vtp", "surface"};
+  const fs::path out = dir_ / "run";
+  ASSERT_EQ(run_upf("run " + write(doc) + " -o " + out.string() + " -q -j2").code, 0);
+  const std::string draw = "render " + out.string() + " --frames 1 --no-video --size 320x180 " +
+                           "--walls hidden -q --color-by speed --range 100,200 -o ";
+  const Result water = run_upf(draw + (dir_ / "water").string() + " --surface");
+  ASSERT_EQ(water.code, 0) << water.output;
+  const Result speed = run_upf(draw + (dir_ / "speed").string());
+  ASSERT_EQ(speed.code, 0) << speed.output;
+  const Picture w = decode_picture(dir_ / "water" / "frame_00001.png");
+  const Picture s = decode_picture(dir_ / "speed" / "frame_00001.png");
+  ASSERT_EQ(w.width, 320);
+  EXPECT_GT(w.blue_fraction, 0.05) << "the water covers part of the picture";
+  EXPECT_LT(s.blue_fraction, 0.01) << "below the range, viridis gives dark purple particles";
+  EXPECT_GT(w.luminance_std, 5.0);
+
+  doc["output"]["formats"] = {"vtp"};
+  const fs::path bare = dir_ / "bare";
+  ASSERT_EQ(run_upf("run " + write(doc) + " -o " + bare.string() + " -q -j2").code, 0);
+  const Result refused = run_upf("render " + bare.string() + " --surface --no-video -q");
+  EXPECT_EQ(refused.code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("add \"surface\" to the scene's /output/formats"),
+            std::string::npos)
+      << refused.output;
+}
+
 }  // namespace
 }  // namespace upf::cli_test
