@@ -32,8 +32,9 @@ std::vector<std::string> probe_names(const SceneDescription& scene) {
   return names;
 }
 
-// Everything a run records: frames on the frame clock, metrics.csv per step, probes.csv per
-// frame, and the totals behind summary.json; all of it saved in and restored from checkpoints.
+// Everything a run records: frames on the frame clock, metrics.csv per step, probes.csv per step
+// (or every /output/probe_every steps) and per frame, and the totals behind summary.json; all of
+// it saved in and restored from checkpoints.
 class RunRecorder {
  public:
   RunRecorder(const SceneDescription& scene, const RunOptions& options, const World& world,
@@ -43,6 +44,7 @@ class RunRecorder {
         result_(result),
         out_dir_(options.out_dir),
         fps_(scene.output.fps),
+        probe_every_(scene.output.probe_every),
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
                 options.surface_mesher, options.resume),
         metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume),
@@ -51,11 +53,16 @@ class RunRecorder {
   // A frame of `state` (the world's particles, or its last good state) at `time`.
   void frame(const Particles& state, double time) {
     frames_.write(state, time);
+    sample_probes(state, time);
+    metrics_.flush();
+  }
+
+  // A row of probes.csv: every probe evaluated on `state` at `time`.
+  void sample_probes(const Particles& state, double time) {
     std::vector<double> values;
     for (const auto& p : scene_.probes)
       values.push_back(evaluate_probe(p, state, scene_.world.spacing));
     probes_.add(time, values);
-    metrics_.flush();
     result_.final_probes.clear();
     for (std::size_t i = 0; i < values.size(); ++i)
       result_.final_probes.emplace_back(scene_.probes[i].name, values[i]);
@@ -77,6 +84,10 @@ class RunRecorder {
     if (t >= next_frame_time() - 1e-12 || at_end) {
       frame(world_.particles(), t);
       while (next_frame_time() <= t + 1e-12) ++next_frame_;
+    } else if (probe_every_ > 0 && !scene_.probes.empty() &&
+               world_.step_count() % std::uint64_t(probe_every_) == 0) {
+      // Between frames: an impact lasts a few steps, not a few frames.
+      sample_probes(world_.particles(), t);
     }
   }
 
@@ -133,6 +144,7 @@ class RunRecorder {
   RunResult& result_;
   std::filesystem::path out_dir_;
   double fps_;
+  int probe_every_;
   std::int32_t next_frame_ = 1;
   FrameWriter frames_;
   MetricsLog metrics_;

@@ -78,6 +78,9 @@ struct OutputDesc {
   // "size_warning": `upf run` warns before the first step when its frames would take more
   // bytes than this (GB, 10^9 bytes).
   double size_warning_gb = 20;
+  // "probe_every": probes.csv gets a row every this many steps (and at every frame); 0 samples
+  // the probes at frames only.
+  int probe_every = 1;
 };
 
 struct SceneDescription {

@@ -185,6 +185,50 @@ TEST_F(Cli, RunWritesOutputs) {
   EXPECT_NEAR(s["simulated_time_s"].get<double>(), 0.1, 1e-9);
 }
 
+// probes.csv gets a row at every step (an impact lasts a few steps, not a few frames), and at
+// every frame; /output/probe_every thins the steps, 0 leaves the frames only. The step rows'
+// times are metrics.csv's.
+TEST_F(Cli, ProbesAreSampledEveryStepOrAsThinnedOrAtFrames) {
+  // The values of column `column` (probes.csv: 0 is the time; metrics.csv: 1).
+  auto rows = [](const fs::path& csv, int column = 0) {
+    std::ifstream in(csv);
+    std::vector<double> times;
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      std::size_t at = 0;
+      for (int c = 0; c < column; ++c) at = line.find(',', at) + 1;
+      times.push_back(std::stod(line.substr(at, line.find(',', at) - at)));
+    }
+    return times;
+  };
+  auto doc = sample();
+  doc["time"]["end"] = 0.1;  // frames at 0, 1/30, 2/30 and 0.1
+  const fs::path every = dir_ / "every", fifth = dir_ / "fifth", frames = dir_ / "frames";
+  ASSERT_EQ(run_upf("run " + write(doc) + " -o " + every.string() + " -j2 -q").code, 0);
+  doc["output"]["probe_every"] = 5;
+  ASSERT_EQ(run_upf("run " + write(doc) + " -o " + fifth.string() + " -j2 -q").code, 0);
+  doc["output"]["probe_every"] = 0;
+  ASSERT_EQ(run_upf("run " + write(doc) + " -o " + frames.string() + " -j2 -q").code, 0);
+
+  const std::vector<double> steps = rows(every / "metrics.csv", 1);
+  ASSERT_GT(steps.size(), 20u);
+  const std::vector<double> sampled = rows(every / "probes.csv");
+  ASSERT_EQ(sampled.size(), steps.size() + 1) << "frame 0, then every step";
+  EXPECT_EQ(sampled[0], 0.0);
+  for (std::size_t k = 0; k < steps.size(); ++k) EXPECT_NEAR(sampled[k + 1], steps[k], 1e-8);
+  EXPECT_EQ(rows(frames / "probes.csv").size(), 4u) << "the four frames";
+  // Every fifth step, plus the frames that fall between.
+  const std::vector<double> thinned = rows(fifth / "probes.csv");
+  EXPECT_GT(thinned.size(), steps.size() / 5);
+  EXPECT_LT(thinned.size(), steps.size() / 5 + 5);
+  double previous = -1;
+  for (double t : thinned) {
+    EXPECT_GT(t, previous);
+    previous = t;
+  }
+}
+
 TEST_F(Cli, ARunIntoAnEarlierRunsDirectoryReplacesItsFiles) {
   // Importers read every frame in frames/: a shorter second run must not leave the first run's
   // later frames behind. The user's own files stay.

@@ -85,10 +85,11 @@ TEST(WorldSettingSpecs, DefaultsAreTheSettingsOfASceneWithoutThem) {
   EXPECT_EQ(neighbour_setting_specs().at(0).default_value, double(world.reorder_every));
   EXPECT_EQ(output_setting_specs().at(0).default_value, output.fps);
   EXPECT_EQ(output_setting_specs().at(1).default_value, output.size_warning_gb);
+  EXPECT_EQ(output_setting_specs().at(2).default_value, double(output.probe_every));
   // One spec per number the reader reads: a new key gets a spec, or this count trips.
   EXPECT_EQ(time.size() + stability_setting_specs().size() + neighbour_setting_specs().size() +
                 output_setting_specs().size(),
-            9u);
+            10u);
 }
 
 }  // namespace
