@@ -433,9 +433,12 @@ void read_output_types(JsonInput& in, const json& types, OutputDesc& output) {
       const auto type =
           name.is_string() ? parse_particle_type(name.get<std::string>()) : std::nullopt;
       if (!type) {
+        std::string known;  // from the enum's own names, so a fifth type is listed too
+        for (int t = 0; t < kParticleTypeCount; ++t)
+          known += (t == 0 ? "\"" : ", \"") + std::string(to_string(static_cast<ParticleType>(t))) +
+                   "\"";
         in.problem(JsonInput::child(where, i),
-                   "unknown particle type " + name.dump() +
-                       " (known: \"liquid\", \"rigid\", \"granular\", \"frozen\")");
+                   "unknown particle type " + name.dump() + " (known: " + known + ")");
         continue;
       }
       chosen |= mask_of(*type);
