@@ -49,6 +49,7 @@ void check_covered(const World& world, const std::string& where) {
   for (std::size_t m = 0; m < setup.owns.size(); ++m)
     setup.owns[m] = fluid.owned.owns(MaterialId(m)) ? 1 : 0;
   setup.reactions = fluid.reaction_list >= 0;
+  setup.wall_pressure = fluid.wall_pressure;
   setup.stages = solver.stages();
   return setup;
 }

@@ -99,7 +99,7 @@ class FluidPart final : public SolverPart<Backend> {
       step.pressure_acceleration = raw<Vec3>(pressure_acceleration_);
       run_non_pressure_stages(exec, step.owned, step.f,
                               {step.fluid_gradient, step.boundary_gradient, step.other_acceleration,
-                               step.density, liquid_force},
+                               step.density, liquid_force, step.pressure},
                               state.world.gravity);
       method_.non_pressure(exec, step);
     });
@@ -141,6 +141,7 @@ class FluidPart final : public SolverPart<Backend> {
     f.fluid = state.lists.view(fluid_list_);
     f.boundary = state.lists.view(boundary_list_);
     f.kernel = CubicSplineKernel(state.world.support_radius);
+    f.wall_pressure = setup_.wall_pressure;
     return f;
   }
 

@@ -24,6 +24,7 @@ struct FluidSetup {
   // Keep grad W_ij per fluid pair (12 B a pair, as the CPU path does) instead of recomputing it
   // where used: the same bits either way (FluidGradients).
   bool store_gradients = false;
+  bool wall_pressure = false;       // FluidSolverState::wall_pressure
   std::vector<std::string> stages;  // the solver's stage names, for the metrics
   std::string density = "density", pressure = "pressure";  // the exported fields
 };

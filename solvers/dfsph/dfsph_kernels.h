@@ -3,8 +3,9 @@
 // incompressible and viscous fluids", IEEE TVCG 23(3)), written once for host and device.
 //
 // Both solvers correct a working velocity v with the pressure-like values K_i = kappa_i / rho_i:
-//   v_i -= dt [ sum_j m_j (K_i + K_j) grad W_ij + rho0_i K_i sum_b V_b grad W_ib ]
-// (the boundary term of Akinci et al. 2012, Psi_b = rho0_i V_b). K_i is chosen so that, with
+//   v_i -= dt [ sum_j m_j (K_i + K_j) grad W_ij + rho0_i (K_i + K_b) sum_b V_b grad W_ib ]
+// (the boundary particles of Akinci et al. 2012, Psi_b = rho0_i V_b, with the wall's K_b, the
+// Shepard average of the neighbourhood's K: boundary_pressure.h). K_i is chosen so that, with
 // the neighbours' K held fixed, particle i's predicted density change cancels its error:
 //   K_i = omega (rho_adv_i - rho0_i) / (dt^2 D_i)     (D_i: solvers/fluid/density_rate.h)
 // which is the paper's kappa_i = (rho_adv_i - rho0) alpha_i / dt^2 with alpha_i = rho_i / D_i
@@ -16,6 +17,7 @@
 // checkerboard modes that a full step overshoots; dfsph_solver.h says why upf uses 0.5.
 #pragma once
 
+#include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/density_rate.h"
 
 namespace upf {
@@ -93,7 +95,7 @@ struct ClearStiffnessStage {
   UPF_HD void operator()(std::uint32_t i) const { stiffness[i] = 0; }
 };
 
-// v_i -= dt [ sum_j m_j (K_i + K_j) grad W_ij + rho0_i K_i sum_b V_b grad W_ib ]; K of a
+// v_i -= dt [ sum_j m_j (K_i + K_j) grad W_ij + rho0_i (K_i + K_b) sum_b V_b grad W_ib ]; K of a
 // particle the solver does not move is 0.
 struct DfsphVelocityStage {
   FluidView f;
@@ -104,12 +106,13 @@ struct DfsphVelocityStage {
   Vec3* v;
   UPF_HD void operator()(std::uint32_t i) const {
     const Real ki = k[i];
-    Vec3 sum = boundary_gradient[i] * (f.rest_density[f.material[i]] * ki);
+    Vec3 a = boundary_pressure_acceleration(f, boundary_gradient[i], ki,
+                                            mirrored_pressure_factor(f, FactorArray{k}, i), i);
     for (std::uint32_t n = f.fluid.offsets[i]; n < f.fluid.offsets[i + 1]; ++n) {
       const std::uint32_t j = f.fluid.indices[n];
-      sum += fluid_gradient.at(f, i, n) * (f.mass[j] * (ki + k[j]));
+      a -= fluid_gradient.at(f, i, n) * (f.mass[j] * (ki + k[j]));
     }
-    v[i] -= sum * dt;
+    v[i] += a * dt;
   }
 };
 

@@ -40,11 +40,14 @@ ParamBinding<DfsphParams> DfsphSolver::param_binding() {
          "1: each solver starts from the previous step's stiffness, as the paper does"},
         &DfsphParams::warm_start);
   b.add(stop_percentile_spec(), &DfsphParams::stop_percentile);
+  b.add(wall_pressure_spec(), &DfsphParams::wall_pressure);
   return b;
 }
 
 DfsphSolver::DfsphSolver(const DfsphParams& params, std::vector<MaterialId> materials)
-    : params_(params), materials_(std::move(materials)), stopping_(params.stop_percentile) {}
+    : params_(params), materials_(std::move(materials)), stopping_(params.stop_percentile) {
+  fluid_.wall_pressure = params.wall_pressure != 0;
+}
 
 void DfsphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);

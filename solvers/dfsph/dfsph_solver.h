@@ -47,6 +47,7 @@ struct DfsphParams {
   bool warm_start = true;
   double omega = 0;            // relaxation of the Jacobi update
   double stop_percentile = 0;  // the constant-density solver's StoppingError: 0 the average
+  double wall_pressure = 0;    // boundary_pressure.h: 1 on, 0 Akinci's term alone
 };
 
 class DfsphSolver final : public Solver {

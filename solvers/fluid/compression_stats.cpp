@@ -48,6 +48,17 @@ double StoppingError::operator()(const CpuExecutor& exec, const OwnedParticles& 
   return double(compressions_[rank]);
 }
 
+ParamSpec wall_pressure_spec() {
+  return {"wall_pressure",
+          "1",
+          0,
+          0,
+          1,
+          "1: frozen walls carry the fluid's pressure, extrapolated hydrostatically (Adami et al. "
+          "2012), so the layer on a wall reads rho0 g d; 0: Akinci et al. 2012's term alone, under "
+          "which it reads about 1.7 times that (docs/boundary-pressure.md)"};
+}
+
 ParamSpec stop_percentile_spec() {
   return {"stop_percentile",
           "%",

@@ -42,5 +42,7 @@ class StoppingError {
 
 // The scene parameter every iterative fluid solver offers for StoppingError.
 ParamSpec stop_percentile_spec();
+// The parameter "wall_pressure" of the fluid solvers (boundary_pressure.h), off by default.
+ParamSpec wall_pressure_spec();
 
 }  // namespace upf

@@ -7,7 +7,9 @@
 //   a_i = -sum_j m_j (K_i + K_j) grad W_ij - rho0_i K_i sum_b V_b grad W_ib
 // changes particle i's density over a step by -dt^2 K_i D_i through its own K_i, with
 //   D_i = |sum_j m_j grad W_ij + rho0_i sum_b V_b grad W_ib|^2 + sum_j m_i m_j |grad W_ij|^2
-// (equal masses: the DFSPH paper's rho_i / alpha_i, and -rho_i^2 a_ii / dt^2 of IISPH).
+// (equal masses: the DFSPH paper's rho_i / alpha_i, and -rho_i^2 a_ii / dt^2 of IISPH). The
+// wall's own pressure term, rho0_i K_b sum_b V_b grad W_ib (boundary_pressure.h), is a
+// neighbourhood average of K and is left to the off-diagonal part.
 #pragma once
 
 #include "solvers/fluid/fluid_view.h"

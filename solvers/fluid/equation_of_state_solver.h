@@ -29,6 +29,8 @@ class EquationOfStateSolver : public Solver {
   const FluidSolverState& fluid_state() const { return fluid_; }
 
  protected:
+  // boundary_pressure.h; off unless the solver turns it on.
+  void set_wall_pressure(bool on) { fluid_.wall_pressure = on; }
   // Called by prepare() once the shared state is set up.
   virtual void prepare_method(World& world) = 0;
   // After the shared forces: the method's own density (written over `density`, which holds the

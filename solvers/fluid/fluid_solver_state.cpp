@@ -28,7 +28,9 @@ FluidView FluidSolverState::begin_step(const World& world) {
   boundary_gradient.resize(n);
   other_acceleration.resize(n);
   pressure_acceleration.resize(n);
-  return make_fluid_view(world, table, lists);
+  FluidView f = make_fluid_view(world, table, lists);
+  f.wall_pressure = wall_pressure;
+  return f;
 }
 
 void FluidSolverState::initial_density(World& world) {
@@ -39,13 +41,14 @@ void FluidSolverState::initial_density(World& world) {
                                                 boundary_gradient.data(), density});
 }
 
-void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density) {
+void FluidSolverState::shared_forces(World& world, const FluidView& f, Real* density) {
   const Vec3* liquid_force = world.coupling().active(CouplingArray::LiquidForce)
                                  ? world.coupling()[CouplingArray::LiquidForce].data()
                                  : nullptr;
+  const Real* pressure = world.particles()[pressure_field].data();
   run_non_pressure_stages(world.executor(), owned.range(), f,
                           {fluid_gradient.data(), boundary_gradient.data(),
-                           other_acceleration.data(), density, liquid_force},
+                           other_acceleration.data(), density, liquid_force, pressure},
                           world.settings().gravity);
 }
 

@@ -28,6 +28,9 @@ inline CouplingUse fluid_solver_coupling() {
 
 struct FluidSolverState {
   FluidMaterialTable table;
+  // The solver's choice of wall pressure (boundary_pressure.h; its parameter "wall_pressure"),
+  // put into every FluidView.
+  bool wall_pressure = false;
   FluidNeighbourHandles lists;
   int reaction_list = -1;  // rigid -> liquid, when a body system collects reactions
   OwnedParticles owned;
@@ -49,7 +52,8 @@ struct FluidSolverState {
   // state's (Solver::initialize_fields), which frame 0 shows.
   void initial_density(World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
-  void shared_forces(const World& world, const FluidView& f, Real* density);
+  // With f.wall_pressure, also the hydrostatic part of the wall pressure (boundary_pressure.h).
+  void shared_forces(World& world, const FluidView& f, Real* density);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array
   // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor` is P_i of
   // boundary_reactions.h (a value struct, fluid_stages.h); `pressure_gradient` the gradient of the

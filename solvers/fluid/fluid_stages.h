@@ -3,6 +3,7 @@
 // executors and backends"). C++17: nvcc compiles these too (fluid_cuda_check.cu).
 #pragma once
 
+#include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
@@ -20,15 +21,19 @@ struct DensityAndGradientsStage {
   }
 };
 
-// a_other = g + the shared viscosity (fluid_forces.h).
+// a_other = g + the shared viscosity (fluid_forces.h) + the wall pressure's hydrostatic part
+// (boundary_pressure.h; with f.wall_pressure only).
 struct GravityAndViscosityStage {
   FluidView f;
   const Real* density;
   FluidGradients fluid_gradient;
+  const Real* pressure;
   Vec3 gravity;
   Vec3* a_other;
   UPF_HD void operator()(std::uint32_t i) const {
-    a_other[i] = gravity + viscosity_acceleration(f, density, fluid_gradient, i);
+    Vec3 a = gravity + viscosity_acceleration(f, density, fluid_gradient, i);
+    if (f.wall_pressure) a += boundary_hydrostatic_acceleration(f, pressure, gravity, i);
+    a_other[i] = a;
   }
 };
 
@@ -86,28 +91,6 @@ struct CompressionValue {
   }
 };
 
-// The pressure factors P_i of boundary_reactions.h, one struct per form.
-// PCISPH: p_i / rho0_i^2.
-struct PressureOverRestDensitySquared {
-  const Real* pressure;
-  const Real* rest_density;
-  const MaterialId* material;
-  UPF_HD Real operator()(std::uint32_t i) const {
-    const Real rho0 = rest_density[material[i]];
-    return pressure[i] / (rho0 * rho0);
-  }
-};
-
-// WCSPH and the default pair term: p_i / rho_i^2, scaled (SPH's symmetrised force: 1/2).
-struct PressureOverDensitySquared {
-  const Real* pressure;
-  const Real* density;
-  Real scale;
-  UPF_HD Real operator()(std::uint32_t i) const {
-    return scale * pressure[i] / (density[i] * density[i]);
-  }
-};
-
 // The non-pressure part every fluid solver's step starts with, for any executor (the CPU's, or
 // the device pipeline's): density and kernel gradients at the current positions, then
 // a_other = g + viscosity, plus F / m from other materials when `liquid_force` is not null.
@@ -117,14 +100,15 @@ struct NonPressureArrays {
   Vec3* other_acceleration;
   Real* density;
   const Vec3* liquid_force;  // CouplingArray::LiquidForce, or null
+  const Real* pressure;      // at the step's start: the wall pressure's hydrostatic part
 };
 
 template <class Executor>
 void run_non_pressure_stages(const Executor& exec, ParticleRange owned, const FluidView& f,
                              const NonPressureArrays& a, const Vec3& gravity) {
   exec.run(owned, DensityAndGradientsStage{f, a.fluid_gradient, a.boundary_gradient, a.density});
-  exec.run(owned,
-           GravityAndViscosityStage{f, a.density, a.fluid_gradient, gravity, a.other_acceleration});
+  exec.run(owned, GravityAndViscosityStage{f, a.density, a.fluid_gradient, a.pressure, gravity,
+                                           a.other_acceleration});
   if (a.liquid_force)
     exec.run(owned, AddForceOverMassStage{a.liquid_force, f.mass, a.other_acceleration});
 }

@@ -27,6 +27,8 @@ struct FluidView {
   NeighbourView fluid;                       // fluid -> fluid
   NeighbourView boundary;                    // fluid -> frozen and rigid
   CubicSplineKernel kernel;
+  // Walls and bodies carry the pressure of boundary_pressure.h; else Akinci et al.'s term alone.
+  bool wall_pressure = false;
 };
 
 // The kernel gradients grad W_ij of a step's fluid pairs, by fluid-list slot k of particle i:

@@ -5,14 +5,17 @@
 // Eurographics tutorial, section 3.4): the same relaxed Jacobi iteration on the pressure Poisson
 // equation, with the off-diagonal sum evaluated through the pressure accelerations.
 //
-//   a_i   = -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) grad W_ij - rho0_i (p_i/rho_i^2) sum_b V_b grad
-//   W_ib (A p)_i = dt^2 [ sum_j m_j (a_i - a_j) . grad W_ij + rho0_i a_i . sum_b V_b grad W_ib ]
+//   a_i   = -sum_j m_j (p_i/rho_i^2 + p_j/rho_j^2) grad W_ij
+//           - rho0_i (p_i + p_b)/rho_i^2 sum_b V_b grad W_ib
+//   (A p)_i = dt^2 [ sum_j m_j (a_i - a_j) . grad W_ij + rho0_i a_i . sum_b V_b grad W_ib ]
 //   a_ii  = -dt^2 D_i / rho_i^2                     (D_i: solvers/fluid/density_rate.h)
 //   p_i  <- max(0, p_i + omega (rho0 - rho_adv_i - (A p)_i) / a_ii)
 // with rho_adv_i = rho_i + dt Drho_i/Dt at v_adv = v + dt a_other. Akinci et al. 2012
-// boundaries, Psi_b = rho0_i V_b, the fluid particle's own pressure on the boundary term.
+// boundaries, Psi_b = rho0_i V_b, with the wall pressure p_b of boundary_pressure.h; the diagonal
+// takes i's pressure through p_i only (in p_b it is one kernel weight among many).
 #pragma once
 
+#include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/density_rate.h"
 
 namespace upf {
@@ -49,7 +52,9 @@ struct IisphPressureAccelerationStage {
   Vec3* a_pressure;
   UPF_HD void operator()(std::uint32_t i) const {
     const Real pi = pressure[i] / (density[i] * density[i]);
-    Vec3 a = boundary_gradient[i] * (-f.rest_density[f.material[i]] * pi);
+    const Real pb =
+        mirrored_pressure_factor(f, PressureOverDensitySquared{pressure, density, 1}, i);
+    Vec3 a = boundary_pressure_acceleration(f, boundary_gradient[i], pi, pb, i);
     for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
       const std::uint32_t j = f.fluid.indices[k];
       a -=

@@ -25,11 +25,14 @@ ParamBinding<IisphParams> IisphSolver::param_binding() {
   b.add({"omega", "1", 0.5, 0.05, 1, "relaxation of the Jacobi update (the paper: 0.5)"},
         &IisphParams::omega);
   b.add(stop_percentile_spec(), &IisphParams::stop_percentile);
+  b.add(wall_pressure_spec(), &IisphParams::wall_pressure);
   return b;
 }
 
 IisphSolver::IisphSolver(const IisphParams& params, std::vector<MaterialId> materials)
-    : params_(params), materials_(std::move(materials)), stopping_(params.stop_percentile) {}
+    : params_(params), materials_(std::move(materials)), stopping_(params.stop_percentile) {
+  fluid_.wall_pressure = params.wall_pressure != 0;
+}
 
 void IisphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);

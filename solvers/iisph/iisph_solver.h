@@ -31,6 +31,7 @@ struct IisphParams {
   int min_iterations = 0, max_iterations = 0;
   double omega = 0;            // Jacobi relaxation
   double stop_percentile = 0;  // StoppingError: 0 the average
+  double wall_pressure = 0;    // boundary_pressure.h: 1 on, 0 Akinci's term alone
 };
 
 class IisphSolver final : public Solver {

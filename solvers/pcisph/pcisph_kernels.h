@@ -2,6 +2,7 @@
 // host and device: the predicted state, the pressure correction and the pressure acceleration.
 #pragma once
 
+#include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_view.h"
 
@@ -10,10 +11,7 @@ namespace upf {
 // Pressure acceleration of fluid particle i at the current positions, with the paper's symmetric
 // form and rest densities in the denominators (as in the derivation of delta):
 //   a_i = -sum_j m_j (p_i/rho0_i^2 + p_j/rho0_j^2) grad W_ij
-//         -sum_b Psi_b (p_i/rho0_i^2) grad W_ib          (Akinci et al. 2012, eq. 10)
-// The boundary term takes the fluid particle's own pressure (Akinci's eq. 10). The symmetric
-// "mirrored" variant with 2 p_i drove the correction loop into slow, oscillating convergence next
-// to walls (73 iterations on the first step of the hydrostatic tank instead of 3).
+//         -sum_b Psi_b (p_i + p_b)/rho0_i^2 grad W_ib    (boundary_pressure.h)
 // `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from density_and_gradients:
 // the positions do not move during the correction loop, so neither do the gradients.
 UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* pressure,
@@ -27,9 +25,9 @@ UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* 
     const Real rho0j = f.rest_density[f.material[j]];
     a -= fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (rho0j * rho0j)));
   }
-  // Psi_b p_i / rho0^2 = V_b rho0 p_i / rho0^2.
-  a -= boundary_gradient * (rho0 * pi);
-  return a;
+  const Real pb = mirrored_pressure_factor(
+      f, PressureOverRestDensitySquared{pressure, f.rest_density, f.material}, i);
+  return a + boundary_pressure_acceleration(f, boundary_gradient, pi, pb, i);
 }
 
 // Step 1 of the loop: v* = v + (a_other + a_p) dt, x* = x + v* dt.

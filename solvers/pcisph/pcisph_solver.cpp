@@ -26,6 +26,7 @@ ParamBinding<PcisphParams> PcisphSolver::param_binding() {
          "> max_iterations, the loop stops at max_iterations"},
         &PcisphParams::max_iterations);
   b.add(stop_percentile_spec(), &PcisphParams::stop_percentile);
+  b.add(wall_pressure_spec(), &PcisphParams::wall_pressure);
   return b;
 }
 
@@ -34,7 +35,9 @@ PcisphSolver::PcisphSolver(const PcisphParams& params, std::vector<MaterialId> m
       stopping_(params.stop_percentile),
       min_iterations_(params.min_iterations),
       max_iterations_(params.max_iterations),
-      materials_(std::move(materials)) {}
+      materials_(std::move(materials)) {
+  fluid_.wall_pressure = params.wall_pressure != 0;
+}
 
 double PcisphSolver::template_delta_scale(Real spacing, const CubicSplineKernel& kernel) {
   // A particle with a full neighbourhood on the initial cubic lattice.

@@ -26,6 +26,7 @@ struct PcisphParams {
   double eta = 0;  // target average compression
   int min_iterations = 0, max_iterations = 0;
   double stop_percentile = 0;  // StoppingError: 0 the average
+  double wall_pressure = 0;    // boundary_pressure.h: 1 on, 0 Akinci's term alone
 };
 
 class PcisphSolver final : public Solver {

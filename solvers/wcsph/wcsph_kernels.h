@@ -3,6 +3,7 @@
 // spline's, taken from density_and_gradients like PCISPH's.
 #pragma once
 
+#include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/fluid_view.h"
 
 namespace upf {
@@ -18,7 +19,7 @@ UPF_HD inline Real tait_pressure(Real rho, Real rest_density, Real b) {
 
 // Pressure acceleration, the paper's symmetric form (eq. 5):
 //   a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij
-//         -sum_b Psi_b (p_i / rho_i^2) grad W_ib          (Akinci et al. 2012, eq. 10)
+//         -sum_b Psi_b (p_i + p_b) / rho_i^2 grad W_ib    (boundary_pressure.h)
 // `boundary_gradient` is sum_b V_b grad W_ib; Psi_b = rho0_i V_b.
 UPF_HD inline Vec3 wcsph_pressure_acceleration(const FluidView& f, const Real* density,
                                                const Real* pressure, FluidGradients fluid_gradient,
@@ -30,8 +31,8 @@ UPF_HD inline Vec3 wcsph_pressure_acceleration(const FluidView& f, const Real* d
     const std::uint32_t j = f.fluid.indices[k];
     a -= fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
   }
-  a -= boundary_gradient * (f.rest_density[f.material[i]] * pi);
-  return a;
+  const Real pb = mirrored_pressure_factor(f, PressureOverDensitySquared{pressure, density, 1}, i);
+  return a + boundary_pressure_acceleration(f, boundary_gradient, pi, pb, i);
 }
 
 // The paper's artificial viscosity (eq. 11), acting only between approaching particles:

@@ -1,6 +1,7 @@
 #include "solvers/wcsph/wcsph_solver.h"
 
 #include "framework/world/world.h"
+#include "solvers/fluid/compression_stats.h"
 #include "solvers/fluid/fluid_time_step.h"
 #include "solvers/fluid/sound_speed.h"
 #include "solvers/wcsph/wcsph_steps.h"
@@ -20,6 +21,7 @@ ParamBinding<WcsphParams> WcsphSolver::param_binding() {
   b.add({"cfl", "1", 0.4, 0.01, 1,
          "CFL number of dt <= cfl * spacing / (c + |v|max); it replaces time.cfl for WCSPH"},
         &WcsphParams::cfl);
+  b.add(wall_pressure_spec(), &WcsphParams::wall_pressure);
   return b;
 }
 
@@ -27,7 +29,9 @@ WcsphSolver::WcsphSolver(const WcsphParams& params, std::vector<MaterialId> mate
     : EquationOfStateSolver(std::move(materials)),
       requested_sound_speed_(Real(params.sound_speed)),
       alpha_(Real(params.alpha)),
-      cfl_(Real(params.cfl)) {}
+      cfl_(Real(params.cfl)) {
+  set_wall_pressure(params.wall_pressure != 0);
+}
 
 void WcsphSolver::prepare_method(World& world) {
   sound_speed_ = requested_sound_speed_ > 0

@@ -38,6 +38,7 @@ struct WcsphParams {
   double sound_speed = 0;  // m/s; 0: automatic
   double alpha = 0;        // artificial viscosity
   double cfl = 0;
+  double wall_pressure = 0;  // boundary_pressure.h: 1 on, 0 Akinci's term alone
 };
 
 class WcsphSolver final : public EquationOfStateSolver {

@@ -139,6 +139,16 @@ TEST(DevicePipelineOmp, HydrostaticTankIsBitwiseTheCpuPath) {
   expect_parity(small_tank(), 80);
 }
 
+// The wall pressure (solvers/fluid/boundary_pressure.h) of every solver that offers it.
+TEST(DevicePipelineOmp, WallPressureIsBitwiseTheCpuPath) {
+  for (const char* solver : {"pcisph", "iisph", "dfsph", "wcsph"}) {
+    SCOPED_TRACE(solver);
+    auto doc = small_tank();
+    doc["materials"]["water"]["solver"] = {{"name", solver}, {"wall_pressure", 1}};
+    expect_parity(doc, 40);
+  }
+}
+
 TEST(DevicePipelineOmp, WcsphDamBreakIsBitwiseTheCpuPath) {
   auto doc = small_dam_break();
   doc["materials"]["water"]["solver"] = {{"name", "wcsph"}};

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "scene_helpers.h"
@@ -30,6 +31,19 @@ struct DepthPressure {
   }
 };
 
+// One lattice layer of liquid, counted up from the floor (layer 0 touches it), over the tank's
+// interior columns (two support radii from the side walls): what a floor or wall pressure sensor
+// reads is the first layer's pressure.
+struct LayerPressure {
+  int layer = 0;
+  double height = 0;         // m, the mean height of its particles
+  double measured = 0;       // Pa, time-averaged, layer-averaged
+  double expected = 0;       // Pa, rho0 g (surface - height)
+  double density_error = 0;  // time-averaged (rho - rho0) / rho0, the layer's largest
+  int particles = 0;
+  double relative_error() const { return (measured - expected) / expected; }
+};
+
 struct HydrostaticTankResult {
   SolverStats last_step;  // the solver's statistics at the end of the window
   std::uint64_t steps = 0;
@@ -38,6 +52,9 @@ struct HydrostaticTankResult {
   double surface = 0;          // m: see SurfaceReference
   double v_rms = 0;            // m/s over the liquid
   std::vector<DepthPressure> slabs;
+  std::vector<LayerPressure> layers;  // from the floor up, to the surface
+  // The largest time-averaged density error of any liquid particle, walls and edges included.
+  double max_mean_density_error = 0;
   bool all_inside = true;  // no liquid particle past the first wall layer
 };
 
@@ -62,13 +79,17 @@ inline HydrostaticTankResult run_hydrostatic_tank(
   tw.run_until(settle_time);
   const World& w = *tw.world;
   const Particles& p = w.particles();
-  std::map<ParticleId, double> pressure_sum;
+  std::map<ParticleId, double> pressure_sum, density_sum;
   int samples = 0;
   while (w.time() < settle_time + average_time - 1e-12) {
     tw.run_until(std::min(w.time() + 0.01, settle_time + average_time));
     const auto& pr = *p.find_scalar("pressure");
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.type[i] == ParticleType::Liquid) pressure_sum[p.id[i]] += double(pr[i]);
+    const auto& rho = *p.find_scalar("density");
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.type[i] != ParticleType::Liquid) continue;
+      pressure_sum[p.id[i]] += double(pr[i]);
+      density_sum[p.id[i]] += double(rho[i]);
+    }
     ++samples;
   }
   HydrostaticTankResult r;
@@ -136,6 +157,40 @@ inline HydrostaticTankResult run_hydrostatic_tank(
     slab.expected_at_particles = slab.particles > 0 ? rho0 * g * depth_sum / slab.particles : 0;
     r.slabs.push_back(slab);
   }
+
+  // Lattice layers from the floor: the liquid ranked by height, as many to a layer as one lattice
+  // layer of the block holds (the first layer may sit well below its lattice height); pressures
+  // from the interior columns only.
+  std::vector<std::pair<double, std::size_t>> by_height;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.type[i] != ParticleType::Liquid) continue;
+    by_height.emplace_back(double(p.position[i].y), i);
+    const double e = (density_sum[p.id[i]] / samples - rho0) / rho0;
+    r.max_mean_density_error = std::max(r.max_mean_density_error, e);
+  }
+  std::sort(by_height.begin(), by_height.end());
+  const auto per_layer = std::size_t(std::lround(kTankWidth / h) * std::lround(kTankWidth / h));
+  r.layers.resize(by_height.size() / per_layer);
+  for (std::size_t rank = 0; rank < r.layers.size() * per_layer; ++rank) {
+    const std::size_t i = by_height[rank].second;
+    LayerPressure& layer = r.layers[rank / per_layer];
+    layer.layer = int(rank / per_layer);
+    const Vec3& x = p.position[i];
+    if (x.x < 2 * support || x.x > kTankWidth - 2 * support || x.z < 2 * support ||
+        x.z > kTankWidth - 2 * support)
+      continue;
+    layer.measured += pressure_sum[p.id[i]] / samples;
+    layer.height += double(x.y);
+    layer.density_error =
+        std::max(layer.density_error, (density_sum[p.id[i]] / samples - rho0) / rho0);
+    ++layer.particles;
+  }
+  for (auto& layer : r.layers) {
+    if (layer.particles == 0) continue;
+    layer.measured /= layer.particles;
+    layer.height /= layer.particles;
+    layer.expected = rho0 * g * (r.surface - layer.height);
+  }
   return r;
 }
 
@@ -150,6 +205,13 @@ inline void print_hydrostatic_tank(const HydrostaticTankResult& r) {
         "Pa (%+.2f %%)\n",
         s.depth, s.measured, s.expected, 100 * s.relative_error(), s.expected_at_particles,
         100 * s.relative_error_at_particles());
+  std::printf("largest time-averaged density error %.5f\n", r.max_mean_density_error);
+  for (const auto& l : r.layers)
+    std::printf(
+        "layer %2d at %.4f m (%3d particles): p = %7.1f Pa, rho0 g d = %7.1f Pa (%+.2f %%), "
+        "density error up to %+.3f %%\n",
+        l.layer, l.height, l.particles, l.measured, l.expected, 100 * l.relative_error(),
+        100 * l.density_error);
 }
 
 // The sample with its water moved by `solver` (a solver object: {"name": ..., params...}).
