@@ -31,7 +31,8 @@ double evaluate_probe(const ProbeDesc& probe, const Particles& particles, Real s
         const double c = double(x[probe.axis]);
         if (std::isnan(best) || (probe.max_side ? c > best : c < best)) best = c;
       }
-      return best;
+      if (!probe.surface || std::isnan(best)) return best;
+      return best + (probe.max_side ? 0.5 : -0.5) * double(spacing);
     }
     case ProbeKind::Height: {
       const int u = (probe.axis + 1) % 3, w = (probe.axis + 2) % 3;

@@ -1,6 +1,7 @@
 // Probes: numbers measured on the liquid while a scene runs (written to probes.csv).
 //   extent    the largest (or smallest) coordinate of liquid along an axis, optionally only inside
-//             a region: the surge front of a dam break is the largest x near the floor.
+//             a region: the surge front of a dam break is the largest x near the floor. The
+//             particle centre's, or with `surface` the particle's surface, half a spacing out.
 //   height    the liquid surface height along the up axis in a thin column at a point: the top
 //             particle centre plus half a spacing.
 //   pressure  the mean pressure of liquid particles inside a small sphere.

@@ -41,10 +41,11 @@ enum class ProbeKind { Extent, Height, Pressure };
 struct ProbeDesc {
   std::string name;
   ProbeKind kind = ProbeKind::Extent;
-  int axis = 0;                                  // extent: measured axis; height: the up axis
-  bool max_side = true;                          // extent: largest (true) or smallest coordinate
-  std::optional<Box> region;                     // extent: only liquid inside this box counts
-  Eigen::Vector2d at = Eigen::Vector2d::Zero();  // height: the two other coordinates, in order
+  int axis = 0;               // extent: measured axis; height: the up axis
+  bool max_side = true;       // extent: largest (true) or smallest coordinate
+  std::optional<Box> region;  // extent: only liquid inside this box counts
+  bool surface = false;       // extent: the particles' surface (centre + half a spacing outwards)
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();      // height: the two other coordinates, in order
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // pressure: sphere centre
   double radius = 0;  // height: column radius; pressure: sphere radius
 };

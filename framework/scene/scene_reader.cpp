@@ -185,12 +185,18 @@ void read_probe(JsonInput& in, const json& node, const std::string& path, double
     if (other.name == p.name) in.problem(JsonInput::child(path, "name"), "duplicate probe name");
   if (*type == "extent") {
     p.kind = ProbeKind::Extent;
-    in.check_keys(node, path, {"name", "type", "axis", "side", "region"});
+    in.check_keys(node, path, {"name", "type", "axis", "side", "region", "surface"});
     p.axis = read_axis(in, node, path, "axis", std::nullopt).value_or(0);
     auto side = in.string(node, path, "side", false).value_or("max");
     if (side != "max" && side != "min")
       in.problem(JsonInput::child(path, "side"), "side '" + side + "' is not 'min' or 'max'");
     p.max_side = side == "max";
+    if (auto it = node.find("surface"); it != node.end()) {
+      if (it->is_boolean())
+        p.surface = it->get<bool>();
+      else
+        in.problem(JsonInput::child(path, "surface"), "expected true or false");
+    }
     if (auto it = node.find("region"); it != node.end()) {
       const std::string rp = JsonInput::child(path, "region");
       if (in.expect_object(*it, rp)) {
