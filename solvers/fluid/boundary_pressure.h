@@ -28,10 +28,10 @@
 // part, the wall has no pressure gradient along it, and the fluid beside a side wall lacks half
 // its support: it sinks along the walls and rises in the middle, a convection the walls keep
 // driving (0.85 J in the tank after 4 s, against 0.001 J).
-// Rigid bodies keep Akinci's single term: their boundary particles sit on the surface, not half a
-// spacing under it as a container wall's do, and with p_b the fluid kept a full spacing from them,
-// so a cube of half the water's density floated 0.059 L too high. The Müller et al. SPH solver
-// keeps Akinci's single term too (sph_kernels.h says why).
+// Rigid bodies keep Akinci's single term: with p_b on them too (and its reactions), a cube of half
+// the water's density floated with its centre 0.059 L above the waterline (bound 0.05 L); why is
+// not known yet. The Müller et al. SPH solver keeps Akinci's single term too (sph_kernels.h says
+// why).
 #pragma once
 
 #include "solvers/fluid/fluid_view.h"
