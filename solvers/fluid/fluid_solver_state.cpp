@@ -41,7 +41,7 @@ void FluidSolverState::initial_density(World& world) {
                                                 boundary_gradient.data(), density});
 }
 
-void FluidSolverState::shared_forces(World& world, const FluidView& f, Real* density) {
+void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density) {
   const Vec3* liquid_force = world.coupling().active(CouplingArray::LiquidForce)
                                  ? world.coupling()[CouplingArray::LiquidForce].data()
                                  : nullptr;

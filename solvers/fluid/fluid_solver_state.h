@@ -53,7 +53,7 @@ struct FluidSolverState {
   void initial_density(World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
   // With f.wall_pressure, also the hydrostatic part of the wall pressure (boundary_pressure.h).
-  void shared_forces(World& world, const FluidView& f, Real* density);
+  void shared_forces(const World& world, const FluidView& f, Real* density);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array
   // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor` is P_i of
   // boundary_reactions.h (a value struct, fluid_stages.h); `pressure_gradient` the gradient of the
