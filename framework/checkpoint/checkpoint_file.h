@@ -17,7 +17,7 @@
 
 namespace upf {
 
-inline constexpr std::uint32_t kCheckpointFormat = 1;
+inline constexpr std::uint32_t kCheckpointFormat = 2;  // 2: bodies keep their frame-mean forces
 inline constexpr const char* kCheckpointFileName = "checkpoint.upfck";
 
 // "upf 0.1.0, Real float": runs resume only in the build flavour that wrote them.

@@ -33,6 +33,9 @@ class FrameWriter {
               std::vector<std::string> fields, bool enabled, const World& world,
               SurfaceMesher surface_mesher, bool resuming);
 
+  // After each step of length `dt` ending at `time` (body_outputs.h); `row`: a row of
+  // body_forces.csv now.
+  void record_step(double time, double dt, bool row) { bodies_.record_step(time, dt, row); }
   // Writes the frame of `particles` at `time`: the world's state, or its last good state.
   void write(const Particles& particles, double time);
   // The bytes write() puts on disk per frame for `particles` uncompressed (particle files only:
@@ -57,7 +60,7 @@ class FrameWriter {
   vtk_xml::Compression compression_;
   TypeMask vtp_types_;  // the types in the .vtp frame files (frozen ones apart, see below)
   TypeMask ply_types_;
-  bool ply_z_up_;       // PLY files turned Z-up for Blender (z_up.h)
+  bool ply_z_up_;                // PLY files turned Z-up for Blender (z_up.h)
   bool frozen_piece_;            // the frozen particles go once into frames/frozen.vtp
   bool frozen_written_ = false;  // by this process (a resumed run writes the same bytes again)
   double spacing_;

@@ -32,9 +32,9 @@ std::vector<std::string> probe_names(const SceneDescription& scene) {
   return names;
 }
 
-// Everything a run records: frames on the frame clock, metrics.csv per step, probes.csv per step
-// (or every /output/probe_every steps) and per frame, and the totals behind summary.json; all of
-// it saved in and restored from checkpoints.
+// Everything a run records: frames on the frame clock, metrics.csv per step, probes.csv and
+// body_forces.csv per step (or every /output/probe_every steps) and per frame, and the totals
+// behind summary.json; all of it saved in and restored from checkpoints.
 class RunRecorder {
  public:
   RunRecorder(const SceneDescription& scene, const RunOptions& options, const World& world,
@@ -81,12 +81,14 @@ class RunRecorder {
     metrics_.add(m, world_.last_step());
     totals_.add_step(world_.last_step(), result_);
     const double t = world_.time();
-    if (t >= next_frame_time() - 1e-12 || at_end) {
+    const bool at_frame = t >= next_frame_time() - 1e-12 || at_end;
+    // Between frames too: an impact lasts a few steps, not a few frames.
+    const bool row_due = probe_every_ > 0 && world_.step_count() % std::uint64_t(probe_every_) == 0;
+    frames_.record_step(t, world_.last_step().dt, at_frame || row_due);
+    if (at_frame) {
       frame(world_.particles(), t);
       while (next_frame_time() <= t + 1e-12) ++next_frame_;
-    } else if (probe_every_ > 0 && !scene_.probes.empty() &&
-               world_.step_count() % std::uint64_t(probe_every_) == 0) {
-      // Between frames: an impact lasts a few steps, not a few frames.
+    } else if (row_due && !scene_.probes.empty()) {
       sample_probes(world_.particles(), t);
     }
   }

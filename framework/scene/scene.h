@@ -38,6 +38,15 @@ struct FluidBlockDesc {
 
 enum class ProbeKind { Extent, Height, Pressure };
 
+// How a height or pressure probe turns the particles it sees into one number.
+//   Top     height: the highest particle centre plus half a spacing (a free surface)
+//   Volume  height: the liquid volume per unit area under a 2D kernel (a wave gauge; spray and
+//           droplets above the surface count only by their volume)
+//   Mean    pressure: the plain mean over a sphere
+//   Kernel  pressure: the Shepard-normalised SPH interpolation at the centre, so a sensor on a
+//           wall reads the fluid's pressure extrapolated to the wall
+enum class ProbeMethod { Top, Volume, Mean, Kernel };
+
 struct ProbeDesc {
   std::string name;
   ProbeKind kind = ProbeKind::Extent;
@@ -47,7 +56,8 @@ struct ProbeDesc {
   bool surface = false;       // extent: the particles' surface (centre + half a spacing outwards)
   Eigen::Vector2d at = Eigen::Vector2d::Zero();      // height: the two other coordinates, in order
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // pressure: sphere centre
-  double radius = 0;  // height: column radius; pressure: sphere radius
+  double radius = 0;                      // height: column radius; pressure: sphere radius
+  ProbeMethod method = ProbeMethod::Top;  // height: Top or Volume; pressure: Mean or Kernel
 };
 
 struct OutputDesc {

@@ -174,6 +174,23 @@ bool check_material_ref(JsonInput& in, const SceneDescription& scene, const std:
   return true;
 }
 
+// The probe's "method": one of `allowed` (the first is the default); anything else is an error
+// naming the path and the allowed names.
+ProbeMethod read_probe_method(JsonInput& in, const json& node, const std::string& path,
+                              const std::vector<std::pair<std::string, ProbeMethod>>& allowed) {
+  const auto name = in.string(node, path, "method", false);
+  if (!name) return allowed.front().second;
+  std::vector<std::string> names;
+  for (const auto& [known, method] : allowed) {
+    if (*name == known) return method;
+    names.push_back(known);
+  }
+  std::string msg = "unknown method '" + *name + "' (allowed: ";
+  for (std::size_t i = 0; i < names.size(); ++i) msg += (i ? ", '" : "'") + names[i] + "'";
+  in.problem(JsonInput::child(path, "method"), msg + ")");
+  return allowed.front().second;
+}
+
 void read_probe(JsonInput& in, const json& node, const std::string& path, double spacing,
                 SceneDescription& scene) {
   ProbeDesc p;
@@ -206,15 +223,22 @@ void read_probe(JsonInput& in, const json& node, const std::string& path, double
     }
   } else if (*type == "height") {
     p.kind = ProbeKind::Height;
-    in.check_keys(node, path, {"name", "type", "axis", "at", "radius"});
+    in.check_keys(node, path, {"name", "type", "axis", "at", "radius", "method"});
     p.axis = read_axis(in, node, path, "axis", 1).value_or(1);
     if (auto at = in.vec2(node, path, "at", true)) p.at = *at;
-    p.radius = in.number(node, path, "radius", 2 * spacing, 0, 1e6, true, "m");
+    p.method = read_probe_method(in, node, path,
+                                 {{"top", ProbeMethod::Top}, {"volume", ProbeMethod::Volume}});
+    // A wider default for the volume: the kernel's sum over a cubic lattice is within 0.7 % of
+    // its integral at 3 s, but only within 4 % at 2 s.
+    const double default_radius = (p.method == ProbeMethod::Volume ? 3 : 2) * spacing;
+    p.radius = in.number(node, path, "radius", default_radius, 0, 1e6, true, "m");
   } else if (*type == "pressure") {
     p.kind = ProbeKind::Pressure;
-    in.check_keys(node, path, {"name", "type", "center", "radius"});
+    in.check_keys(node, path, {"name", "type", "center", "radius", "method"});
     if (auto c = in.vec3(node, path, "center", true)) p.center = *c;
     p.radius = in.number(node, path, "radius", 2 * spacing, 0, 1e6, true, "m");
+    p.method = read_probe_method(in, node, path,
+                                 {{"mean", ProbeMethod::Mean}, {"kernel", ProbeMethod::Kernel}});
   } else {
     std::string msg = "unknown probe type '" + *type + "'";
     if (auto guess = did_you_mean(*type, {"extent", "height", "pressure"}))

@@ -27,9 +27,9 @@ class Bodies : public Cli {
 // The shipped body and granular samples load, and every mesh in them is found, measured and
 // sampled.
 TEST(BodySamples, ValidateCleanly) {
-  for (const char* name :
-       {"floating_objects.json", "mesh_splash.json", "dam_break_obstacles.json",
-        "granular_column.json", "sand_pile.json", "silo_discharge.json", "sand_into_water.json"}) {
+  for (const char* name : {"floating_objects.json", "mesh_splash.json", "dam_break_obstacles.json",
+                           "granular_column.json", "sand_pile.json", "silo_discharge.json",
+                           "sand_into_water.json", "spheric_test2.json"}) {
     const Result r = run_upf("validate " + std::string(UPF_SOURCE_DIR) + "/samples/" + name);
     EXPECT_EQ(r.code, 0) << name << ": " << r.output;
     EXPECT_NE(r.output.find("ok"), std::string::npos) << r.output;
@@ -77,7 +77,9 @@ TEST_F(Bodies, RunWritesBodiesCsvAndBodyMeshesInThePvdSeries) {
   std::ifstream csv(out + "/bodies.csv");
   std::string header, row;
   std::getline(csv, header);
-  EXPECT_EQ(header, "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,fx,fy,fz,tx,ty,tz");
+  EXPECT_EQ(header,
+            "time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,fx,fy,fz,tx,ty,tz,"
+            "fx_mean,fy_mean,fz_mean,tx_mean,ty_mean,tz_mean");
   int rows = 0;
   while (std::getline(csv, row)) ++rows;
   EXPECT_GE(rows, 2);
@@ -86,6 +88,62 @@ TEST_F(Bodies, RunWritesBodiesCsvAndBodyMeshesInThePvdSeries) {
   EXPECT_NE(pvd.str().find("frames/bodies_00000.vtp"), std::string::npos) << pvd.str();
   EXPECT_NE(pvd.str().find("part=\"1\""), std::string::npos);
   EXPECT_TRUE(fs::exists(out + "/frames/bodies_00001.vtp"));
+}
+
+// The numbers of a CSV row.
+std::vector<double> csv_numbers(const std::string& row, std::size_t skip_after_first) {
+  std::vector<double> values;
+  std::stringstream in(row);
+  std::string cell;
+  for (std::size_t column = 0; std::getline(in, cell, ','); ++column)
+    if (column == 0 || column > skip_after_first) values.push_back(std::stod(cell));
+  return values;
+}
+
+// body_forces.csv has the fluid force of every step; bodies.csv's frame means are their
+// integral over the frame interval divided by its length (the rectangle rule over the steps,
+// each step's force held for its dt), and its last-step force is the last row before the frame.
+TEST_F(Bodies, BodyForcesEveryStepAverageToTheFrameMean) {
+  const std::string out = (dir_ / "out").string();
+  nlohmann::json doc = with_body(kAssets + "unit_box.obj");
+  doc["output"]["fps"] = 40;
+  doc["bodies"][0]["mesh"]["position"] = {0.3, 0.4, 0.2};  // in the water column
+  const Result r = run_upf("run " + write(doc) + " --end 0.1 --no-frames -q --out " + out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream steps(out + "/body_forces.csv"), frames(out + "/bodies.csv");
+  std::string row;
+  std::getline(steps, row);
+  EXPECT_EQ(row, "time,body,name,fx,fy,fz,tx,ty,tz");
+  std::vector<std::vector<double>> step_rows;  // t, fx..tz
+  while (std::getline(steps, row)) step_rows.push_back(csv_numbers(row, 2));
+  std::getline(frames, row);
+  std::vector<std::vector<double>> frame_rows;  // t, x..tz, fx_mean..tz_mean
+  while (std::getline(frames, row)) frame_rows.push_back(csv_numbers(row, 2));
+  ASSERT_EQ(frame_rows.size(), 5u);  // t = 0, 0.025, ..., 0.1
+  ASSERT_GT(step_rows.size(), 20u);
+  double previous_frame = 0, previous_step = 0;
+  std::size_t s = 0;
+  int nonzero = 0;
+  for (std::size_t f = 1; f < frame_rows.size(); ++f) {
+    const double t = frame_rows[f][0];
+    std::vector<double> integral(6, 0.0), last(6, 0.0);
+    for (; s < step_rows.size() && step_rows[s][0] <= t + 1e-9; ++s) {
+      const double dt = step_rows[s][0] - previous_step;
+      previous_step = step_rows[s][0];
+      for (int c = 0; c < 6; ++c) integral[c] += dt * step_rows[s][1 + c];
+      last.assign(step_rows[s].begin() + 1, step_rows[s].end());
+    }
+    for (int c = 0; c < 6; ++c) {
+      const double mean = integral[c] / (t - previous_frame);
+      // The CSVs carry 9 significant digits.
+      EXPECT_NEAR(frame_rows[f][20 + c], mean, 1e-6 * (std::abs(mean) + 1e-3))
+          << "frame at " << t << ", component " << c;
+      EXPECT_NEAR(frame_rows[f][14 + c], last[c], 1e-6 * (std::abs(last[c]) + 1e-3));
+      nonzero += frame_rows[f][20 + c] != 0;
+    }
+    previous_frame = t;
+  }
+  EXPECT_GT(nonzero, 4);  // the box is in water: the means are forces, not zeros
 }
 
 }  // namespace

@@ -1,0 +1,174 @@
+// SPHERIC Test 2 (Kleefsman et al. 2005, "A Volume-of-Fluid based simulation method for wave
+// impact problems", J. Comput. Phys. 206; the MARIN experiment): a dam break onto a box, run at
+// 5 cm spacing (5,280 liquid particles) for 1.5 s with PCISPH and compared against the measured
+// traces in tests/data/spheric_test2/ (their source is in SOURCE.md there).
+//
+// What a coarse run must get right, and what it cannot:
+//   - the reservoir drains as measured (gauge H4) and the water depth in front of the box (H2)
+//     follows the experiment: volume and gravity-driven flow;
+//   - the front reaches the gauge at 1.488 m (H3) and the box (P1) when the experiment does;
+//   - the pressure on the lower half of the box's front face (P1-P3, 0.6-1.5 s, after the first
+//     impact) is the measured pressure within 35 %. With Akinci et al.'s boundary term alone it
+//     reads 2.2 times that (docs/boundary-pressure.md); the wall pressure of Adami et al. 2012
+//     (solver parameter wall_pressure, which the sample sets) brings it to 1.1-1.3 times.
+//   - the first-impact peak is not compared: a coarse weakly resolved impact spikes far above.
+// The finer run of samples/spheric_test2.json and its plot are bench/spheric_test2.sh and
+// docs/validation-spheric-test2.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "framework/run/probes.h"
+#include "scene_helpers.h"
+
+namespace upf {
+namespace {
+
+// A time series per column: {"t": [...], "P1": [...], ...}.
+using Series = std::map<std::string, std::vector<double>>;
+
+// One of the stored experiment files; its columns are "time_s" and "<name>_<unit>".
+Series read_experiment(const std::string& file) {
+  std::ifstream in(std::filesystem::path(UPF_SOURCE_DIR) / "tests" / "data" / "spheric_test2" /
+                   file);
+  Series series;
+  std::string line;
+  std::vector<std::string> names;
+  std::getline(in, line);
+  std::stringstream header(line);
+  for (std::string cell; std::getline(header, cell, ',');)
+    names.push_back(cell == "time_s" ? "t" : cell.substr(0, cell.find('_')));
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::string cell;
+    for (const auto& name : names) {
+      std::getline(row, cell, ',');
+      series[name].push_back(std::stod(cell));
+    }
+  }
+  return series;
+}
+
+double window_mean(const Series& s, const std::string& name, double from, double to) {
+  double sum = 0;
+  int count = 0;
+  const auto& t = s.at("t");
+  const auto& v = s.at(name);
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= from && t[i] < to && std::isfinite(v[i])) {
+      sum += v[i];
+      ++count;
+    }
+  return count ? sum / count : std::nan("");
+}
+
+// The first time `name` exceeds `threshold`, or NaN.
+double first_above(const Series& s, const std::string& name, double threshold) {
+  const auto& v = s.at(name);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (v[i] > threshold) return s.at("t")[i];
+  return std::nan("");
+}
+
+// The sample at 5 cm, stepped to `end` with every probe sampled after every step.
+Series run_coarse(double end) {
+  auto doc = testing::load_sample_json("spheric_test2.json");
+  doc["particle_spacing"] = 0.05;
+  doc["bodies"][0]["mesh"]["file"] =
+      (std::filesystem::path(UPF_SOURCE_DIR) / "assets" / "meshes" / "unit_box.obj").string();
+  testing::TestWorld tw(doc, 2);
+  World& w = *tw.world;
+  Series s;
+  auto sample = [&] {
+    s["t"].push_back(w.time());
+    for (const auto& probe : tw.scene.probes)
+      s[probe.name].push_back(evaluate_probe(probe, w.particles(), Real(tw.scene.world.spacing)));
+  };
+  sample();
+  while (w.time() < end - 1e-12) {
+    w.step(w.next_time_step_until(end));
+    sample();
+  }
+  return s;
+}
+
+class SphericTest2 : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    experiment_ = new Series(read_experiment("pressures.csv"));
+    for (auto& [name, values] : read_experiment("heights.csv"))
+      if (name != "t") (*experiment_)[name] = values;
+    simulation_ = new Series(run_coarse(1.5));
+  }
+  static void TearDownTestSuite() {
+    delete experiment_;
+    delete simulation_;
+  }
+  static const Series& experiment() { return *experiment_; }
+  static const Series& simulation() { return *simulation_; }
+
+ private:
+  static Series* experiment_;
+  static Series* simulation_;
+};
+Series* SphericTest2::experiment_ = nullptr;
+Series* SphericTest2::simulation_ = nullptr;
+
+TEST_F(SphericTest2, TheStoredExperimentIsTheMarinDamBreak) {
+  // Guards the data files: the reservoir gauge starts at the 0.55 m column, the gauge at 1.488 m
+  // (nearest the door) wets first, and P1 (lowest on the box) peaks at about 11 kPa.
+  EXPECT_NEAR(experiment().at("H4").front(), 0.55, 0.005);
+  EXPECT_LT(first_above(experiment(), "H3", 0.03), first_above(experiment(), "H2", 0.03));
+  EXPECT_LT(first_above(experiment(), "H2", 0.03), first_above(experiment(), "H1", 0.03));
+  EXPECT_NEAR(first_above(experiment(), "P1", 2000), 0.40, 0.01);
+}
+
+TEST_F(SphericTest2, ReservoirDrainsAndWaterPilesUpInFrontOfTheBoxAsMeasured) {
+  for (auto [from, to] : {std::pair{0.4, 0.6}, {0.6, 1.0}, {1.0, 1.5}}) {
+    const double h4 = window_mean(experiment(), "H4", from, to);
+    const double h4_sim = window_mean(simulation(), "H4", from, to);
+    std::printf("H4 %.1f-%.1f s: measured %.4f m, simulated %.4f m\n", from, to, h4, h4_sim);
+    EXPECT_NEAR(h4_sim, h4, 0.04 * h4) << "reservoir gauge H4, " << from << "-" << to << " s";
+  }
+  for (auto [from, to] : {std::pair{0.6, 1.0}, {1.0, 1.5}}) {
+    const double h2 = window_mean(experiment(), "H2", from, to);
+    const double h2_sim = window_mean(simulation(), "H2", from, to);
+    std::printf("H2 %.1f-%.1f s: measured %.4f m, simulated %.4f m\n", from, to, h2, h2_sim);
+    EXPECT_NEAR(h2_sim, h2, 0.12 * h2) << "gauge H2 in front of the box, " << from << "-" << to;
+  }
+}
+
+TEST_F(SphericTest2, FrontReachesTheGaugeAndTheBoxWhenMeasured) {
+  // A 5 cm front is a row or two of particles, and lags by a few hundredths of a second.
+  const double h3 = first_above(experiment(), "H3", 0.03);
+  const double h3_sim = first_above(simulation(), "H3", 0.03);
+  const double p1 = first_above(experiment(), "P1", 2000);
+  const double p1_sim = first_above(simulation(), "P1", 2000);
+  std::printf("H3 wets at %.3f s (measured %.3f s); P1 passes 2 kPa at %.3f s (measured %.3f s)\n",
+              h3_sim, h3, p1_sim, p1);
+  EXPECT_NEAR(h3_sim, h3, 0.05);
+  EXPECT_NEAR(p1_sim, p1, 0.05);
+}
+
+TEST_F(SphericTest2, PressureOnTheBoxFaceIsTheMeasuredPressure) {
+  double measured = 0, simulated = 0;
+  for (const char* sensor : {"P1", "P2", "P3"}) {
+    const double p = window_mean(experiment(), sensor, 0.6, 1.5);
+    const double p_sim = window_mean(simulation(), sensor, 0.6, 1.5);
+    std::printf("%s 0.6-1.5 s: measured %.0f Pa, simulated %.0f Pa (%.2fx)\n", sensor, p, p_sim,
+                p_sim / p);
+    measured += p;
+    simulated += p_sim;
+  }
+  EXPECT_NEAR(simulated / measured, 1.0, 0.35);
+}
+
+}  // namespace
+}  // namespace upf
