@@ -27,11 +27,17 @@ ParamBinding<PcisphParams> PcisphSolver::param_binding() {
         &PcisphParams::max_iterations);
   b.add(stop_percentile_spec(), &PcisphParams::stop_percentile);
   b.add(wall_pressure_spec(), &PcisphParams::wall_pressure);
+  b.add({"rest_compression", "1", 0.7, 0, 1,
+         "the time step keeps liquid at rest compressed by at most this share of eta (it grows "
+         "as 0.16 g H (dt/s)^2); above about 0.8 the pressure at walls and on bodies flickers "
+         "from step to step; 0: no such limit"},
+        &PcisphParams::rest_compression);
   return b;
 }
 
 PcisphSolver::PcisphSolver(const PcisphParams& params, std::vector<MaterialId> materials)
     : eta_(params.eta),
+      rest_compression_(params.rest_compression),
       stopping_(params.stop_percentile),
       min_iterations_(params.min_iterations),
       max_iterations_(params.max_iterations),
@@ -61,10 +67,16 @@ void PcisphSolver::prepare(World& world) {
   predicted_density_ = p.declare_scalar(kPredictedDensity);
   reference_speed_ = free_fall_speed(world);
   delta_scale_ = template_delta_scale(world.settings().spacing, world.kernel());
+  // rest_compression eta = kRestCompression g H (dt / s)^2 with g H = v_ref^2 / 2.
+  rest_time_step_ = reference_speed_ > 0 && rest_compression_ > 0
+                        ? Real(double(world.settings().spacing) / double(reference_speed_) *
+                               std::sqrt(2 * rest_compression_ * eta_ / kRestCompression))
+                        : Real(0);
 }
 
 Real PcisphSolver::max_time_step(const World& world) const {
-  return fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
+  const Real dt = fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
+  return rest_time_step_ > 0 ? std::min(dt, rest_time_step_) : dt;
 }
 
 std::vector<std::string> PcisphSolver::stages() const {

@@ -10,6 +10,15 @@
 // the template sum is taken once and delta follows every change of dt. Only compression is
 // corrected: pressures stay >= 0. Boundaries follow Akinci et al. 2012 (shared with every fluid
 // solver); non-pressure forces are gravity and the shared viscosity.
+//
+// The time step has a limit of its own besides the shared CFL: pressures start from zero every
+// step, so liquid at rest stays compressed by what min_iterations corrections leave, measured
+// as about kRestCompression g H (dt / s)^2 (3 iterations, cubic spline; H the liquid's height).
+// Once that reaches eta, the stopping test flips between min_iterations and more from step to
+// step, and the pressure, which grows with every iteration, flickers with it: a body floating at
+// 1 cm spacing felt 0.4 to 305 N against its 28 N weight (docs/bodies.md). The limit keeps the
+// resting compression at rest_compression * eta (Ihmsen et al. 2010 adapt the step to the density
+// error for the same reason; this is its closed form at rest).
 #pragma once
 
 #include <vector>
@@ -25,8 +34,9 @@ namespace upf {
 struct PcisphParams {
   double eta = 0;  // target average compression
   int min_iterations = 0, max_iterations = 0;
-  double stop_percentile = 0;  // StoppingError: 0 the average
-  double wall_pressure = 0;    // boundary_pressure.h: 1 on, 0 Akinci's term alone
+  double stop_percentile = 0;   // StoppingError: 0 the average
+  double wall_pressure = 0;     // boundary_pressure.h: 1 on, 0 Akinci's term alone
+  double rest_compression = 0;  // the resting compression the step allows, as a share of eta
 };
 
 class PcisphSolver final : public Solver {
@@ -50,6 +60,9 @@ class PcisphSolver final : public Solver {
   const FluidSolverState& fluid_state() const { return fluid_; }
   static constexpr const char* kPredictedPosition = "pcisph.predicted_position";
   static constexpr const char* kPredictedDensity = "pcisph.predicted_density";
+  // Resting compression = kRestCompression g H (dt / s)^2, fitted to a 0.3 m deep tank at 1 and
+  // 2 cm spacing and 1 to 3.3 ms steps (0.15 to 0.16; docs/bodies.md).
+  static constexpr double kRestCompression = 0.16;
 
   static ParamBinding<PcisphParams> param_binding();
   // sum over the template neighbourhood of |grad W|^2 (the symmetric lattice makes sum grad W = 0
@@ -58,6 +71,7 @@ class PcisphSolver final : public Solver {
 
  private:
   double eta_;
+  double rest_compression_;
   StoppingError stopping_;
   int min_iterations_, max_iterations_;
   std::vector<MaterialId> materials_;
@@ -66,6 +80,7 @@ class PcisphSolver final : public Solver {
   FieldHandle<Real> predicted_density_;
   double delta_scale_ = 0;    // delta = delta_scale_ / dt^2
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
+  Real rest_time_step_ = 0;   // the resting-compression limit (0: none)
   SolverStats stats_;
 };
 

@@ -51,9 +51,13 @@ HydrostaticTankResult expect_incompressible_tank(const nlohmann::json& doc, doub
   EXPECT_LT(std::max(r.max_error, r.max_error_edges), 0.03);
   EXPECT_NEAR(r.surface, kTankColumn, 0.05 * kTankColumn) << "water level";
   EXPECT_LT(r.v_rms, 0.01 * std::sqrt(9.81 * kTankColumn));
+  // Against rho0 g d at the slab's particles' mean depth: a slab one spacing thick catches a
+  // lattice layer up to half a spacing off its nominal depth (10 mm, 12 % of the pressure at
+  // 0.08 m), which the comparison at the nominal depth counted as error.
   for (const auto& s : r.slabs) {
     EXPECT_GT(s.particles, 0);
-    EXPECT_NEAR(s.measured, s.expected, 0.05 * s.expected) << "depth " << s.depth;
+    EXPECT_NEAR(s.measured, s.expected_at_particles, 0.05 * s.expected_at_particles)
+        << "depth " << s.depth;
   }
   expect_inside_tank(r);
   return r;

@@ -99,69 +99,58 @@ Series run_coarse(double end) {
   return s;
 }
 
-class SphericTest2 : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    experiment_ = new Series(read_experiment("pressures.csv"));
-    for (auto& [name, values] : read_experiment("heights.csv"))
-      if (name != "t") (*experiment_)[name] = values;
-    simulation_ = new Series(run_coarse(1.5));
-  }
-  static void TearDownTestSuite() {
-    delete experiment_;
-    delete simulation_;
-  }
-  static const Series& experiment() { return *experiment_; }
-  static const Series& simulation() { return *simulation_; }
-
- private:
-  static Series* experiment_;
-  static Series* simulation_;
-};
-Series* SphericTest2::experiment_ = nullptr;
-Series* SphericTest2::simulation_ = nullptr;
-
-TEST_F(SphericTest2, TheStoredExperimentIsTheMarinDamBreak) {
-  // Guards the data files: the reservoir gauge starts at the 0.55 m column, the gauge at 1.488 m
-  // (nearest the door) wets first, and P1 (lowest on the box) peaks at about 11 kPa.
-  EXPECT_NEAR(experiment().at("H4").front(), 0.55, 0.005);
-  EXPECT_LT(first_above(experiment(), "H3", 0.03), first_above(experiment(), "H2", 0.03));
-  EXPECT_LT(first_above(experiment(), "H2", 0.03), first_above(experiment(), "H1", 0.03));
-  EXPECT_NEAR(first_above(experiment(), "P1", 2000), 0.40, 0.01);
+Series experiment_traces() {
+  Series s = read_experiment("pressures.csv");
+  for (auto& [name, values] : read_experiment("heights.csv"))
+    if (name != "t") s[name] = values;
+  return s;
 }
 
-TEST_F(SphericTest2, ReservoirDrainsAndWaterPilesUpInFrontOfTheBoxAsMeasured) {
+TEST(SphericTest2, TheStoredExperimentIsTheMarinDamBreak) {
+  // Guards the data files: the reservoir gauge starts at the 0.55 m column, the gauge at 1.488 m
+  // (nearest the door) wets first, and P1 (lowest on the box) rises at 0.40 s.
+  const Series experiment = experiment_traces();
+  EXPECT_NEAR(experiment.at("H4").front(), 0.55, 0.005);
+  EXPECT_LT(first_above(experiment, "H3", 0.03), first_above(experiment, "H2", 0.03));
+  EXPECT_LT(first_above(experiment, "H2", 0.03), first_above(experiment, "H1", 0.03));
+  EXPECT_NEAR(first_above(experiment, "P1", 2000), 0.40, 0.01);
+}
+
+// One run (8 s on two threads), three comparisons.
+TEST(SphericTest2, CoarseRunFollowsTheExperiment) {
+  const Series experiment = experiment_traces();
+  const Series simulation = run_coarse(1.5);
+
+  // The reservoir drains and the water piles up in front of the box as measured.
   for (auto [from, to] : {std::pair{0.4, 0.6}, {0.6, 1.0}, {1.0, 1.5}}) {
-    const double h4 = window_mean(experiment(), "H4", from, to);
-    const double h4_sim = window_mean(simulation(), "H4", from, to);
+    const double h4 = window_mean(experiment, "H4", from, to);
+    const double h4_sim = window_mean(simulation, "H4", from, to);
     std::printf("H4 %.1f-%.1f s: measured %.4f m, simulated %.4f m\n", from, to, h4, h4_sim);
     EXPECT_NEAR(h4_sim, h4, 0.04 * h4) << "reservoir gauge H4, " << from << "-" << to << " s";
   }
   for (auto [from, to] : {std::pair{0.6, 1.0}, {1.0, 1.5}}) {
-    const double h2 = window_mean(experiment(), "H2", from, to);
-    const double h2_sim = window_mean(simulation(), "H2", from, to);
+    const double h2 = window_mean(experiment, "H2", from, to);
+    const double h2_sim = window_mean(simulation, "H2", from, to);
     std::printf("H2 %.1f-%.1f s: measured %.4f m, simulated %.4f m\n", from, to, h2, h2_sim);
     EXPECT_NEAR(h2_sim, h2, 0.12 * h2) << "gauge H2 in front of the box, " << from << "-" << to;
   }
-}
 
-TEST_F(SphericTest2, FrontReachesTheGaugeAndTheBoxWhenMeasured) {
-  // A 5 cm front is a row or two of particles, and lags by a few hundredths of a second.
-  const double h3 = first_above(experiment(), "H3", 0.03);
-  const double h3_sim = first_above(simulation(), "H3", 0.03);
-  const double p1 = first_above(experiment(), "P1", 2000);
-  const double p1_sim = first_above(simulation(), "P1", 2000);
+  // The front reaches the gauge and the box when measured; a 5 cm front is a row or two of
+  // particles, and lags by a few hundredths of a second.
+  const double h3 = first_above(experiment, "H3", 0.03);
+  const double h3_sim = first_above(simulation, "H3", 0.03);
+  const double p1 = first_above(experiment, "P1", 2000);
+  const double p1_sim = first_above(simulation, "P1", 2000);
   std::printf("H3 wets at %.3f s (measured %.3f s); P1 passes 2 kPa at %.3f s (measured %.3f s)\n",
               h3_sim, h3, p1_sim, p1);
   EXPECT_NEAR(h3_sim, h3, 0.05);
   EXPECT_NEAR(p1_sim, p1, 0.05);
-}
 
-TEST_F(SphericTest2, PressureOnTheBoxFaceIsTheMeasuredPressure) {
+  // The pressure on the lower half of the box's front face after the first impact.
   double measured = 0, simulated = 0;
   for (const char* sensor : {"P1", "P2", "P3"}) {
-    const double p = window_mean(experiment(), sensor, 0.6, 1.5);
-    const double p_sim = window_mean(simulation(), sensor, 0.6, 1.5);
+    const double p = window_mean(experiment, sensor, 0.6, 1.5);
+    const double p_sim = window_mean(simulation, sensor, 0.6, 1.5);
     std::printf("%s 0.6-1.5 s: measured %.0f Pa, simulated %.0f Pa (%.2fx)\n", sensor, p, p_sim,
                 p_sim / p);
     measured += p;
