@@ -21,6 +21,9 @@ MaterialKind granular_material_kind() {
           {"restitution", "1", 0.5, 0.01, 1,
            "coefficient of restitution of a head-on impact; sets the normal damping"},
           {"friction", "1", 0.5, 0, 10, "sliding (Coulomb) friction coefficient mu"},
+          {"wall_friction", "1", -1, -1, 10,
+           "sliding friction coefficient of grains on container walls and bodies (a glass "
+           "wall under sand); -1: the grain-grain friction"},
           {"rolling_friction", "1", 0, 0, 1,
            "rolling resistance coefficient mu_r: torque mu_r R* F_n against the relative rolling"},
           {"cohesion", "N/m", 0, 0, 10,

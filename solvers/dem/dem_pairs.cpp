@@ -31,6 +31,8 @@ DemPairs::DemPairs(const MaterialTable& materials, Real spacing)
     g.k_n = Real(mat.param("normal_stiffness"));
     g.restitution = Real(mat.param("restitution"));
     g.friction = Real(mat.param("friction"));
+    g.wall_friction =
+        mat.param("wall_friction") >= 0 ? Real(mat.param("wall_friction")) : g.friction;
     g.rolling_friction = Real(mat.param("rolling_friction"));
     g.cohesion = Real(mat.param("cohesion"));
   }
@@ -55,7 +57,7 @@ DemPairParams DemPairs::make(const DemGrainMaterial& a, const DemGrainMaterial* 
   p.m_eff = Real(b && !rigid_other ? ma * b->mass / (ma + b->mass) : ma);
   const auto mean = [&](Real x, Real y) { return b ? Real(0.5) * (x + y) : x; };
   const double e = mean(a.restitution, b ? b->restitution : 0);
-  p.friction = mean(a.friction, b ? b->friction : 0);
+  p.friction = b ? mean(a.friction, b->friction) : a.wall_friction;
   p.rolling_friction = mean(a.rolling_friction, b ? b->rolling_friction : 0);
   const double gamma = mean(a.cohesion, b ? b->cohesion : 0);
   p.cohesion_force = Real(2.0 * kPi * double(p.r_eff) * gamma);

@@ -2,7 +2,7 @@
 // grain (every pair of materials), grain with a container wall (a rigid plane), and grain with a
 // body's boundary particle (a rigid sphere of half a spacing). Between two granular materials,
 // restitution, friction, rolling friction and cohesion are the means of the two; against walls
-// and bodies the grain's own values hold (they are ideally rigid).
+// and bodies the grain's own values hold (they are ideally rigid), its wall_friction for friction.
 // Effective moduli (Hertz): 1/E* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j and
 // 1/G* = 2(2-nu_i)(1+nu_i)/E_i + 2(2-nu_j)(1+nu_j)/E_j (Mindlin 1949; DEM-solutions EDEM guide).
 // Linear: a material's normal_stiffness is k_n between two of its grains (and against a wall);
@@ -23,6 +23,7 @@ struct DemGrainMaterial {
   Real radius = 0, mass = 0, density = 0;
   Real youngs = 0, poisson = 0, k_n = 0;
   Real restitution = 1, friction = 0, rolling_friction = 0, cohesion = 0;
+  Real wall_friction = 0;  // against container walls and bodies
 };
 
 class DemPairs {

@@ -161,5 +161,26 @@ TEST_F(Cli, InvertedHugeGranularBlockIsBadInput) {
   expect_rejected(doc, {"/granular_blocks/0/max", "thinner than one grain diameter"});
 }
 
+// A random packing's settings: a known packing name, a fraction in (0, 0.3], and no random-only
+// keys on a lattice block; each refused with its path.
+TEST_F(Cli, GranularPackingSettingsAreChecked) {
+  std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / "sand_pile.json");
+  const auto sand = nlohmann::json::parse(in);
+  auto doc = sand;
+  doc["granular_blocks"][0]["packing"] = "randm";
+  expect_rejected(doc, {"/granular_blocks/0/packing", "unknown packing 'randm'"});
+  doc = sand;
+  doc["granular_blocks"][0]["packing"] = "random";
+  doc["granular_blocks"][0]["solid_fraction"] = 0.5;
+  expect_rejected(doc, {"/granular_blocks/0/solid_fraction"});
+  doc = sand;
+  doc["granular_blocks"][0]["seed"] = 3;
+  expect_rejected(doc, {"/granular_blocks/0", "belong to \"packing\": \"random\""});
+  doc = sand;
+  doc["granular_blocks"][0]["packing"] = "random";
+  const Result r = run_upf("validate " + write(doc));
+  EXPECT_EQ(r.code, 0) << r.output;
+}
+
 }  // namespace
 }  // namespace upf::cli_test

@@ -10,6 +10,7 @@
 
 #include "coupling_scenes.h"
 #include "scene_helpers.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -46,7 +47,8 @@ double surface_height(const Particles& p, double cx, double cz, double clear) {
 TEST(Buoyancy, CubeOfHalfWaterDensityFloatsWithItsCentreOnTheWaterline) {
   constexpr double kSide = 0.16;
   // Lowered to just above the water: it falls in, bobs and settles.
-  TestWorld t(tank_with_body("pcisph", 500, "unit_box.obj", kSide, {0.25, kWater + 0.5 * kSide + 0.01, 0.25}),
+  TestWorld t(tank_with_body("pcisph", 500, "unit_box.obj", kSide,
+                             {0.25, kWater + 0.5 * kSide + 0.01, 0.25}),
               2);
   t.run_until(2.5);
   double offset = 0, speed = 0;
@@ -63,6 +65,8 @@ TEST(Buoyancy, CubeOfHalfWaterDensityFloatsWithItsCentreOnTheWaterline) {
   offset /= samples;
   std::printf("cube centre - waterline over the last 0.5 s: %.4f m = %.3f L; max speed %.4f m/s\n",
               offset, offset / kSide, speed);
+  record_validation("cube (density 500) centre above the waterline, as a share of L",
+                    "Archimedes: half submerged", "0", "within 0.05", offset / kSide);
   EXPECT_LT(std::abs(offset), 0.05 * kSide);
   EXPECT_LT(speed, 0.05);
 }
@@ -76,6 +80,8 @@ TEST(Buoyancy, SphereOfDensity1500SinksAndRestsOnTheFloor) {
   const BodyState& s = bodies_of(*t.world).state(0);
   const double bottom = s.position.y() - kRadius;
   std::printf("sphere bottom %.4f m above the floor, speed %.4f m/s\n", bottom, s.velocity.norm());
+  record_validation("sphere (density 1500) bottom above the floor", "Archimedes: sinks, rests",
+                    "0 m", "within 0.01 m (half a spacing)", bottom, "m");
   EXPECT_LT(std::abs(bottom), 0.5 * kSpacing);
   EXPECT_LT(s.velocity.norm(), 0.02);
 }

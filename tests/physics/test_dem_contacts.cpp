@@ -10,6 +10,7 @@
 
 #include "scene_helpers.h"
 #include "solvers/dem/dem_solver.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -111,6 +112,15 @@ TEST(DemLinear, HeadOnImpactOfTwoSpheresMatchesRestitutionAndContactTime) {
     const Impact i = measure_pair_impact(t, dt, r);
     std::printf("linear e = %.1f: restitution %.4f, contact time %.4e s (analytic %.4e)\n", e,
                 i.restitution, i.contact_time, tc);
+    char label[64], expected[32];
+    std::snprintf(label, sizeof label, "restitution of a head-on impact, e = %.1f", e);
+    std::snprintf(expected, sizeof expected, "%.1f", e);
+    record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
+                      i.restitution);
+    std::snprintf(label, sizeof label, "contact time of a head-on impact, e = %.1f", e);
+    std::snprintf(expected, sizeof expected, "%.4g s", tc);
+    record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
+                      i.contact_time, "s");
     EXPECT_NEAR(i.restitution, e, 0.02 * e);
     EXPECT_NEAR(i.contact_time, tc, 0.02 * tc);
   }
@@ -166,10 +176,12 @@ TEST(DemHertz, ChungOoiBenchmarkOneGlassSpheres) {
 
 // A sphere on an incline (gravity tilted by theta over a flat floor) rolls without slipping,
 // a = 5/7 g sin(theta), when tan(theta) <= 7/2 mu, and slides, a = g (sin - mu cos), otherwise.
-double incline_acceleration(double theta_degrees, double mu) {
+// `wall_mu` >= 0 sets the material's wall_friction (the floor is a container wall).
+double incline_acceleration(double theta_degrees, double mu, double wall_mu = -1) {
   const double th = theta_degrees * kPi / 180, g = 9.81;
   nlohmann::json mat = {
       {"density", 2500}, {"normal_stiffness", 1e5}, {"restitution", 0.3}, {"friction", mu}};
+  if (wall_mu >= 0) mat["wall_friction"] = wall_mu;
   const double r = 0.01;
   TestWorld t(grain_scene(mat, "dem_linear", {g * std::sin(th), -g * std::cos(th), 0},
                           nlohmann::json::array({grain("sand", {0.1, r, 0.1}, r, {0, 0, 0})}), 2e-5,
@@ -180,6 +192,20 @@ double incline_acceleration(double theta_degrees, double mu) {
   const double v1 = double(p.velocity[grains(p)[0]].x), t1 = t.world->time();
   t.run_until(0.25);
   return (double(p.velocity[grains(p)[0]].x) - v1) / (t.world->time() - t1);
+}
+
+// Friction on walls is the material's wall_friction, not its grain-grain friction: with 0.9
+// between grains and 0.05 on the floor, a sphere on a 30 degree incline slides,
+// a = g (sin - 0.05 cos) = 4.48 m/s^2 (tan 30 = 0.58 > 7/2 0.05); at the grain-grain 0.9 it would
+// roll, a = 5/7 g sin = 3.50 m/s^2.
+TEST(DemLinear, SphereOnAWallFeelsTheWallFriction) {
+  const double a = incline_acceleration(30, 0.9, 0.05);
+  const double th = 30 * kPi / 180;
+  const double expected = 9.81 * (std::sin(th) - 0.05 * std::cos(th));
+  std::printf("wall friction 0.05: a = %.4f m/s^2 (g (sin - mu_w cos) = %.4f)\n", a, expected);
+  record_validation("sliding acceleration on a wall with wall_friction 0.05, grains 0.9",
+                    "Coulomb: g (sin - mu_w cos)", "4.478 m/s^2", "within 2 %", a, "m/s^2");
+  EXPECT_NEAR(a, expected, 0.02 * expected);
 }
 
 TEST(DemLinear, SphereRollsWithoutSlippingDownAGentleIncline) {

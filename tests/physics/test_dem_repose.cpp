@@ -11,6 +11,7 @@
 #include <map>
 
 #include "scene_helpers.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -79,6 +80,11 @@ TEST(DemRepose, AngleOfReposeGrowsWithFriction) {
   const double a2 = repose_angle(0.2), a5 = repose_angle(0.5), a8 = repose_angle(0.8);
   std::printf("angle of repose: mu 0.2 -> %.1f deg, 0.5 -> %.1f deg, 0.8 -> %.1f deg\n", a2, a5,
               a8);
+  for (auto [mu, angle] : {std::pair{0.2, a2}, {0.5, a5}, {0.8, a8}})
+    record_validation("angle of repose, mu = " + std::to_string(mu).substr(0, 3),
+                      "heaps steepen with friction (Zhou et al. 2002)",
+                      "grows with mu, under 45 deg", "2 < a(0.2) < a(0.5) < a(0.8) < 45", angle,
+                      "deg");
   EXPECT_GT(a2, 2.0);
   EXPECT_LT(a2, a5);
   EXPECT_LT(a5, a8);

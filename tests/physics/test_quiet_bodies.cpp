@@ -16,6 +16,7 @@
 
 #include "coupling_scenes.h"
 #include "scene_helpers.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -59,6 +60,10 @@ ForceRecord floating_cube_force(double spacing, const nlohmann::json& solver, do
 }
 
 void expect_quiet(const ForceRecord& r) {
+  record_validation("mean fluid force on a floating cube / its weight", "Archimedes", "1",
+                    "within 1 %", r.mean / kWeight);
+  record_validation("fluid force deviation over 1 s / weight", "a body at rest", "0", "below 5 %",
+                    r.deviation / kWeight);
   EXPECT_NEAR(r.mean, kWeight, 0.01 * kWeight);
   EXPECT_LT(r.deviation, 0.05 * kWeight);
 }
@@ -73,6 +78,9 @@ TEST(QuietBodies, FloatingCubeFeelsItsWeightAtTwoCentimetres) {
 TEST(QuietBodies, WithoutTheRestingCompressionLimitTheForceChatters) {
   const ForceRecord r =
       floating_cube_force(0.02, {{"name", "pcisph"}, {"rest_compression", 0}}, 0.004);
+  record_validation("fluid force deviation over 1 s / weight, no resting-compression limit",
+                    "the chatter the limit removes", "above 0.1", "above 10 %",
+                    r.deviation / kWeight);
   EXPECT_GT(r.deviation, 0.1 * kWeight);
 }
 

@@ -7,6 +7,7 @@
 
 #include "coupling_scenes.h"
 #include "scene_helpers.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -32,6 +33,9 @@ TEST(RigidCoupling, FluidAndBodyMomentumIsConservedWithoutGravity) {
   }
   std::printf("momentum exchanged %.6f kg m/s, largest drift of the total %.3e kg m/s (%.2e)\n",
               exchanged, drift, drift / exchanged);
+  record_validation("drift of fluid + body momentum / momentum exchanged",
+                    "Newton's third law (Akinci et al. 2012 reactions)", "0", "below 1e-3",
+                    drift / exchanged);
   EXPECT_GT(exchanged, 0.1 * body0.norm());  // the cube did hit the water
   EXPECT_LT(drift, 1e-3 * exchanged);
 }

@@ -27,6 +27,7 @@
 
 #include "framework/run/probes.h"
 #include "scene_helpers.h"
+#include "validation_record.h"
 
 namespace upf {
 namespace {
@@ -126,12 +127,22 @@ TEST(SphericTest2, CoarseRunFollowsTheExperiment) {
     const double h4 = window_mean(experiment, "H4", from, to);
     const double h4_sim = window_mean(simulation, "H4", from, to);
     std::printf("H4 %.1f-%.1f s: measured %.4f m, simulated %.4f m\n", from, to, h4, h4_sim);
+    char label[64], expected[32];
+    std::snprintf(label, sizeof label, "reservoir gauge H4, mean over %.1f-%.1f s", from, to);
+    std::snprintf(expected, sizeof expected, "%.4f m", h4);
+    testing::record_validation(label, "Kleefsman et al. 2005 (MARIN)", expected, "within 4 %",
+                               h4_sim, "m");
     EXPECT_NEAR(h4_sim, h4, 0.04 * h4) << "reservoir gauge H4, " << from << "-" << to << " s";
   }
   for (auto [from, to] : {std::pair{0.6, 1.0}, {1.0, 1.5}}) {
     const double h2 = window_mean(experiment, "H2", from, to);
     const double h2_sim = window_mean(simulation, "H2", from, to);
     std::printf("H2 %.1f-%.1f s: measured %.4f m, simulated %.4f m\n", from, to, h2, h2_sim);
+    char label[64], expected[32];
+    std::snprintf(label, sizeof label, "gauge H2 (x = 0.992 m), mean over %.1f-%.1f s", from, to);
+    std::snprintf(expected, sizeof expected, "%.4f m", h2);
+    testing::record_validation(label, "Kleefsman et al. 2005 (MARIN)", expected, "within 12 %",
+                               h2_sim, "m");
     EXPECT_NEAR(h2_sim, h2, 0.12 * h2) << "gauge H2 in front of the box, " << from << "-" << to;
   }
 
@@ -143,6 +154,15 @@ TEST(SphericTest2, CoarseRunFollowsTheExperiment) {
   const double p1_sim = first_above(simulation, "P1", 2000);
   std::printf("H3 wets at %.3f s (measured %.3f s); P1 passes 2 kPa at %.3f s (measured %.3f s)\n",
               h3_sim, h3, p1_sim, p1);
+  char expected[32];
+  std::snprintf(expected, sizeof expected, "%.3f s", h3);
+  testing::record_validation("gauge H3 (x = 1.488 m) wets (0.03 m)",
+                             "Kleefsman et al. 2005 (MARIN)", expected, "within 0.05 s", h3_sim,
+                             "s");
+  std::snprintf(expected, sizeof expected, "%.3f s", p1);
+  testing::record_validation("sensor P1 passes 2 kPa (first impact)",
+                             "Kleefsman et al. 2005 (MARIN)", expected, "within 0.05 s", p1_sim,
+                             "s");
   EXPECT_NEAR(h3_sim, h3, 0.05);
   EXPECT_NEAR(p1_sim, p1, 0.05);
 
@@ -156,6 +176,9 @@ TEST(SphericTest2, CoarseRunFollowsTheExperiment) {
     measured += p;
     simulated += p_sim;
   }
+  testing::record_validation("P1+P2+P3 mean over 0.6-1.5 s / measured",
+                             "Kleefsman et al. 2005 (MARIN)", "1", "within 35 %",
+                             simulated / measured);
   EXPECT_NEAR(simulated / measured, 1.0, 0.35);
 }
 
