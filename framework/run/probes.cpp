@@ -67,7 +67,8 @@ double evaluate_probe(const ProbeDesc& probe, const Particles& particles, Real s
         if (d2 > r2) continue;
         const double c = double(x[probe.axis]);
         if (std::isnan(top) || c > top) top = c;
-        depth += volume * wendland_2d(std::sqrt(d2), probe.radius);
+        if (probe.method == ProbeMethod::Volume)
+          depth += volume * wendland_2d(std::sqrt(d2), probe.radius);
       }
       // A dry wave gauge reads zero depth; a dry column has no surface to report.
       if (probe.method == ProbeMethod::Volume) return depth;
