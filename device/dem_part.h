@@ -55,6 +55,9 @@ class DemPart final : public SolverPart<Backend> {
     angular_velocity_ = &p.vector_array(setup_.step.angular_velocity);
     force_ = &p.vector_array(setup_.step.force);
     torque_ = &p.vector_array(setup_.step.torque);
+    wall_normal_ = &p.vector_array(setup_.step.wall_normal);
+    wall_shear_ = &p.vector_array(setup_.step.wall_shear);
+    contact_load_ = &p.scalar_array(setup_.step.contact_load);
     const DemSpringState springs = setup_.load_springs();
     primed_ = springs.primed;
     contacts_.set_springs(springs);
@@ -111,7 +114,7 @@ class DemPart final : public SolverPart<Backend> {
       if (s.liquid) interpolate_fluid(state, owned);
       a = arrays(state, owned, rigid);
       if (!primed_) {
-        run_dem_forces(exec, a, h, 0, 0);
+        run_dem_first_forces(exec, a, h);
         primed_ = true;
       }
     });
@@ -184,6 +187,9 @@ class DemPart final : public SolverPart<Backend> {
     a.force = raw<Vec3>(*force_);
     a.torque = raw<Vec3>(*torque_);
     a.boundary_force = reaction_list_ >= 0 ? state.boundary_force_or_null() : nullptr;
+    a.wall_normal = raw<Vec3>(*wall_normal_);
+    a.wall_shear = raw<Vec3>(*wall_shear_);
+    a.contact_load = raw<Real>(*contact_load_);
     return a;
   }
 
@@ -206,6 +212,9 @@ class DemPart final : public SolverPart<Backend> {
   vector<Vec3>* angular_velocity_ = nullptr;
   vector<Vec3>* force_ = nullptr;
   vector<Vec3>* torque_ = nullptr;
+  vector<Vec3>* wall_normal_ = nullptr;
+  vector<Vec3>* wall_shear_ = nullptr;
+  vector<Real>* contact_load_ = nullptr;
 };
 
 }  // namespace upf::device

@@ -17,7 +17,8 @@
 
 namespace upf {
 
-inline constexpr std::uint32_t kCheckpointFormat = 2;  // 2: bodies keep their frame-mean forces
+// 2: bodies keep their frame-mean forces; 3: the solvers' tables (DEM wall forces)
+inline constexpr std::uint32_t kCheckpointFormat = 3;
 inline constexpr const char* kCheckpointFileName = "checkpoint.upfck";
 
 // "upf 0.1.0, Real float": runs resume only in the build flavour that wrote them.

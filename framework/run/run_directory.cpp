@@ -37,8 +37,13 @@ std::size_t clear_earlier_run(const fs::path& dir) {
   std::size_t removed = 0;
   std::error_code ec;
   for (const char* name : {"particles.pvd", "metrics.csv", "probes.csv", "bodies.csv",
-                           "summary.json", "scene.json", kCheckpointFileName})
+                           "body_forces.csv", "summary.json", "scene.json", kCheckpointFileName})
     removed += fs::remove(dir / name, ec) ? 1 : 0;
+  // The DEM solvers' tables (DemSolver::tables): dem_<model>_walls.csv, "_2" ... when repeated.
+  removed += remove_matching(dir, [](const std::string& n) {
+    return n.rfind("dem_", 0) == 0 && n.find("_walls") != std::string::npos &&
+           fs::path(n).extension() == ".csv";
+  });
   removed += remove_matching(dir / "frames", [](const std::string& n) {
     return numbered(n, "frame_") || numbered(n, "surface_") || numbered(n, "bodies_") ||
            n == "frozen.vtp";

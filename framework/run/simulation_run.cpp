@@ -14,6 +14,7 @@
 #include "framework/run/probes.h"
 #include "framework/run/run_directory.h"
 #include "framework/run/run_totals.h"
+#include "framework/run/solver_tables.h"
 #include "framework/scene/scene_builder.h"
 
 namespace upf {
@@ -32,8 +33,9 @@ std::vector<std::string> probe_names(const SceneDescription& scene) {
   return names;
 }
 
-// Everything a run records: frames on the frame clock, metrics.csv per step, probes.csv and
-// body_forces.csv per step (or every /output/probe_every steps) and per frame, and the totals
+// Everything a run records: frames on the frame clock, metrics.csv per step, probes.csv,
+// body_forces.csv and the solvers' tables (solver_tables.h) per step (or every
+// /output/probe_every steps) and per frame, and the totals
 // behind summary.json; all of it saved in and restored from checkpoints.
 class RunRecorder {
  public:
@@ -48,7 +50,8 @@ class RunRecorder {
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
                 options.surface_mesher, options.resume),
         metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume),
-        probes_(options.out_dir / "probes.csv", probe_names(scene), options.resume) {}
+        probes_(options.out_dir / "probes.csv", probe_names(scene), options.resume),
+        tables_(world, options.out_dir, options.resume) {}
 
   // A frame of `state` (the world's particles, or its last good state) at `time`.
   void frame(const Particles& state, double time) {
@@ -57,8 +60,9 @@ class RunRecorder {
     metrics_.flush();
   }
 
-  // A row of probes.csv: every probe evaluated on `state` at `time`.
+  // A row of probes.csv: every probe evaluated on `state` at `time`; and of each solver table.
   void sample_probes(const Particles& state, double time) {
+    tables_.add(state, time);
     std::vector<double> values;
     for (const auto& p : scene_.probes)
       values.push_back(evaluate_probe(p, state, scene_.world.spacing));
@@ -88,7 +92,7 @@ class RunRecorder {
     if (at_frame) {
       frame(world_.particles(), t);
       while (next_frame_time() <= t + 1e-12) ++next_frame_;
-    } else if (row_due && !scene_.probes.empty()) {
+    } else if (row_due && (!scene_.probes.empty() || !tables_.empty())) {
       sample_probes(world_.particles(), t);
     }
   }
@@ -130,6 +134,7 @@ class RunRecorder {
     frames_.save_state(out);
     metrics_.save_state(out);
     probes_.save_state(out);
+    tables_.save_state(out);
     totals_.save_state(out, result_, wall_seconds);
   }
   void restore_state(StateReader& in) {
@@ -137,6 +142,7 @@ class RunRecorder {
     frames_.restore_state(in);
     metrics_.restore_state(in);
     probes_.restore_state(in);
+    tables_.restore_state(in);
     totals_.restore_state(in, result_);
   }
 
@@ -151,6 +157,7 @@ class RunRecorder {
   FrameWriter frames_;
   MetricsLog metrics_;
   ProbeLog probes_;
+  SolverTableLogs tables_;
   RunTotals totals_;
 };
 

@@ -51,7 +51,9 @@ std::vector<ParamSpec> output_setting_specs() {
        "upf run warns before the first step when its frames would take more than this many "
        "gigabytes (10^9 bytes; the uncompressed size, which compression only lowers)"},
       {"probe_every", "steps", 1, 0, 1e9,
-       "probes.csv and body_forces.csv get a row every this many steps, and at every frame; "
+       "probes.csv, body_forces.csv and the grains' dem_<model>_walls.csv get a row every this "
+       "many "
+       "steps, and at every frame; "
        "0: at frames only (with a device, each probes.csv row downloads the particles)",
        true},
   };

@@ -13,8 +13,17 @@
 namespace upf {
 
 class World;
+class Particles;
 class StateWriter;
 class StateReader;
+
+// A table of figures a solver adds a row to per recorded step, besides its stats (DEM: the force
+// of its grains on each container face). A run writes it as FILE.csv beside probes.csv, with the
+// same cadence.
+struct SolverTable {
+  std::string file;                  // without ".csv"; unique among the scene's solvers
+  std::vector<std::string> columns;  // after the time column
+};
 
 // What a solver reports after a step, for metrics and comparisons.
 struct SolverStats {
@@ -41,6 +50,14 @@ class Solver {
   // initial state (a fluid's density) so that frame 0 shows real values. Must not change what
   // the first step computes.
   virtual void initialize_fields(World&) {}
+  // The solver's tables (after prepare), and a row of each from `state`, the world's particles.
+  // A row depends only on `state`'s particles and fields (with a device pipeline they are the
+  // device's, downloaded), in a way that does not depend on their order. No rows when `state`
+  // lacks a field they need (a last good state keeps only the exported fields).
+  virtual std::vector<SolverTable> tables(const World&) const { return {}; }
+  virtual std::vector<std::vector<double>> table_rows(const World&, const Particles&) const {
+    return {};
+  }
   // Checkpoints (World::save_state): what the solver keeps from one step to the next outside the
   // particle fields, which the world saves itself. Stateless solvers keep the defaults.
   virtual void save_state(StateWriter&) const {}

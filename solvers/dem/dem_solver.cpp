@@ -7,6 +7,7 @@
 #include "framework/world/world.h"
 #include "solvers/dem/dem_stages.h"
 #include "solvers/dem/dem_steps.h"
+#include "solvers/dem/dem_wall_forces.h"
 
 namespace upf {
 
@@ -43,6 +44,9 @@ void DemSolver::prepare(World& world) {
   angular_velocity_ = p.declare_vector(kAngularVelocityField, {}, true);
   force_ = p.declare_vector(kForceField);
   torque_ = p.declare_vector(kTorqueField);
+  wall_normal_ = p.declare_vector(kWallNormalField);
+  wall_shear_ = p.declare_vector(kWallShearField);
+  contact_load_ = p.declare_scalar(kContactLoadField, 0, true);
   std::vector<Real>& radius = p[radius_];
   primed_ = false;
   for (std::size_t i = 0; i < p.size(); ++i)
@@ -111,6 +115,9 @@ DemStepSetup DemSolver::step_setup(const World& world) const {
   s.angular_velocity = kAngularVelocityField;
   s.force = kForceField;
   s.torque = kTorqueField;
+  s.wall_normal = kWallNormalField;
+  s.wall_shear = kWallShearField;
+  s.contact_load = kContactLoadField;
   return s;
 }
 
@@ -156,7 +163,7 @@ void DemSolver::step(World& world, Real dt, StageRunner& run) {
     if (liquid) interpolate_fluid(world);
     a = arrays(world);
     if (!primed_) {
-      run_dem_forces(world.executor(), a, h_, 0, 0);
+      run_dem_first_forces(world.executor(), a, h_);
       primed_ = true;
     }
   });
@@ -225,7 +232,28 @@ DemArrays DemSolver::arrays(World& world) {
   a.torque = p[torque_].data();
   a.boundary_force =
       reaction_list_ >= 0 ? world.coupling()[CouplingArray::BoundaryForce].data() : nullptr;
+  a.wall_normal = p[wall_normal_].data();
+  a.wall_shear = p[wall_shear_].data();
+  a.contact_load = p[contact_load_].data();
   return a;
+}
+
+std::vector<SolverTable> DemSolver::tables(const World& world) const {
+  if (world.containers().empty()) return {};
+  return {{std::string(name()) + "_walls", container_wall_columns(world.containers().size())}};
+}
+
+std::vector<std::vector<double>> DemSolver::table_rows(const World& world,
+                                                       const Particles& state) const {
+  if (world.containers().empty()) return {};
+  // By name, not by handle: `state` may be another copy of the particles. A last good state
+  // keeps only the exported fields: no row from it.
+  const std::vector<Vec3>* normal = state.find_vector(kWallNormalField);
+  const std::vector<Vec3>* shear = state.find_vector(kWallShearField);
+  const std::vector<Real>* radius = state.find_scalar(kRadiusField);
+  if (!normal || !shear || !radius) return {};
+  return {container_wall_row(container_wall_forces(state, world.containers(), owned_.materials(),
+                                                   normal->data(), shear->data(), radius->data()))};
 }
 
 }  // namespace upf

@@ -41,6 +41,11 @@ inline constexpr const char* kAngularVelocityField = "angular_velocity";
 inline constexpr const char* kRadiusField = "radius";
 inline constexpr const char* kForceField = "dem.force";    // N, on each grain, last sub-step
 inline constexpr const char* kTorqueField = "dem.torque";  // N m
+// Recorded for export (DemContactRecord): the container walls' normal and tangential forces on
+// each grain averaged over the step (N), and the sum of |F| over its contacts (N, exported).
+inline constexpr const char* kWallNormalField = "dem.wall_normal";
+inline constexpr const char* kWallShearField = "dem.wall_shear";
+inline constexpr const char* kContactLoadField = "dem.contact_load";
 
 struct DemParams {
   double substep_fraction = 0;  // of the shortest contact time
@@ -59,6 +64,11 @@ class DemSolver : public Solver {
   std::vector<std::string> stages() const override;
   void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override { return stats_; }
+  // "<name>_walls": the grains' force on each container face (dem_wall_forces.h), when the scene
+  // has containers.
+  std::vector<SolverTable> tables(const World& world) const override;
+  std::vector<std::vector<double>> table_rows(const World& world,
+                                              const Particles& state) const override;
   void save_state(StateWriter& out) const override;
   void restore_state(StateReader& in) override;
 
@@ -84,7 +94,8 @@ class DemSolver : public Solver {
   std::unique_ptr<DemPairs> pairs_;
   DemContactList contacts_;  // this world step's candidates and their springs
   FieldHandle<Real> radius_;
-  FieldHandle<Vec3> angular_velocity_, force_, torque_;
+  FieldHandle<Vec3> angular_velocity_, force_, torque_, wall_normal_, wall_shear_;
+  FieldHandle<Real> contact_load_;
   int grains_list_ = -1, reaction_list_ = -1;
   Real substep_ = 0, h_ = 0;
   Real skin_ = 0;        // m, how far contact lists reach beyond the longest contact

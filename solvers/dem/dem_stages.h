@@ -20,6 +20,18 @@ namespace upf {
 
 inline constexpr Real kDemBallVolume = Real(4.0 / 3.0 * 3.14159265358979323846);
 
+// What DemForcesStage records for export (dem_wall_forces.h): the container walls' forces on each
+// grain averaged over the world step. Null pointers: not recorded.
+struct DemContactRecord {
+  // Per grain: the normal forces of container faces on it, by axis (a face on the lower side of
+  // an axis pushes +, one on the upper side -), and the faces' tangential forces, both averaged
+  // over the step's sub-steps.
+  Vec3* wall_normal = nullptr;
+  Vec3* wall_shear = nullptr;
+  Real weight = 0;       // this sub-step's share of the step (h / dt)
+  bool restart = false;  // the step's first sub-step: the averages start again
+};
+
 // Contact, gravity and fluid forces on grain i at the current state, with the springs of its
 // candidates updated; the fluid force is added to the step's average with weight fluid_weight.
 struct DemForcesStage {
@@ -42,18 +54,29 @@ struct DemForcesStage {
   Vec3* fluid_force;
   Vec3* force;
   Vec3* torque;
+  DemContactRecord record;
 
   UPF_HD void operator()(std::uint32_t i) const {
     const Real ri = radius[i];
     Vec3 f = gravity * m[i];
     Vec3 tau{};
+    Vec3 wall_normal{}, wall_shear{};
+    bool walled = false;
     for (std::uint32_t k = contacts.offsets[i]; k < contacts.offsets[i + 1]; ++k) {
       const std::uint32_t j = contacts.partner[k];
       if (j & kDemWallPartner) {
-        wall(i, k, j & ~kDemWallPartner, f, tau);
+        walled = wall(i, k, j & ~kDemWallPartner, f, tau, wall_normal, wall_shear) || walled;
       } else {
         sphere(i, k, j, f, tau);
       }
+    }
+    // Most grains touch no wall: they write their averages only when those start again.
+    if (record.wall_normal && record.restart) {
+      record.wall_normal[i] = wall_normal * record.weight;
+      record.wall_shear[i] = wall_shear * record.weight;
+    } else if (record.wall_normal && walled) {
+      record.wall_normal[i] += wall_normal * record.weight;
+      record.wall_shear[i] += wall_shear * record.weight;
     }
     if (fluid && fluid[i].fluid_fraction > 0) {
       const Real volume = kDemBallVolume * ri * ri * ri;
@@ -68,8 +91,9 @@ struct DemForcesStage {
 
  private:
   // A force at contact k: on i, with its torque; the partner's torque recorded on the candidate.
-  // r_partner: the partner's radius, for the torque it gets back (DemGatherPairsStage).
-  UPF_INLINE UPF_HD void apply(std::uint32_t i, std::uint32_t k, const DemPairParams& pp,
+  // r_partner: the partner's radius, for the torque it gets back (DemGatherPairsStage). Returns
+  // the contact's force on i.
+  UPF_INLINE UPF_HD Vec3 apply(std::uint32_t i, std::uint32_t k, const DemPairParams& pp,
                                Real overlap, const Vec3& n, const Vec3& v_rel, const Vec3& w_rel,
                                Real r_partner, Vec3& f, Vec3& tau) const {
     const DemContactForce c = dem_contact_force(model, pp, overlap, n, v_rel, contacts.xi[k], h);
@@ -80,6 +104,7 @@ struct DemForcesStage {
     tau += cross(n * (-radius[i]), tangential);
     tau += rolling;
     contacts.touch(k, c.xi, c.force, cross(n * r_partner, -tangential), rolling);
+    return c.force;
   }
 
   // Grain i against sphere j: another grain, or a body's boundary particle moving on at its
@@ -106,9 +131,10 @@ struct DemForcesStage {
   }
 
   // A container face (code = container * 6 + face), if the grain is inside the box (or within a
-  // radius of it).
-  UPF_INLINE UPF_HD void wall(std::uint32_t i, std::uint32_t k, std::uint32_t code, Vec3& f,
-                              Vec3& tau) const {
+  // radius of it). The face's force splits into its normal part (axis a) and the rest. Returns
+  // whether they touch.
+  UPF_INLINE UPF_HD bool wall(std::uint32_t i, std::uint32_t k, std::uint32_t code, Vec3& f,
+                              Vec3& tau, Vec3& wall_normal, Vec3& wall_shear) const {
     const Real ri = radius[i];
     const ContainerBox& box = boxes[code / 6];
     bool inside = true;
@@ -119,11 +145,16 @@ struct DemForcesStage {
     const Real overlap = ri - (lower ? x[i][a] - box.min[a] : box.max[a] - x[i][a]);
     if (!inside || overlap <= 0) {
       contacts.separate(k);
-      return;
+      return false;
     }
     Vec3 n{};
     n[a] = lower ? Real(1) : Real(-1);
-    apply(i, k, pairs.walls[mat[i]], overlap, n, v[i] - cross(w[i] * ri, n), w[i], 0, f, tau);
+    Vec3 on_grain =
+        apply(i, k, pairs.walls[mat[i]], overlap, n, v[i] - cross(w[i] * ri, n), w[i], 0, f, tau);
+    wall_normal[a] += on_grain[a];
+    on_grain[a] = 0;
+    wall_shear += on_grain;
+    return true;
   }
 };
 
@@ -143,6 +174,21 @@ struct DemGatherPairsStage {
     }
     force[j] = f;
     torque[j] = tau;
+  }
+};
+
+// Grain i's contact load: the sum of |F| over its touching contacts, those it holds and those
+// its partners hold (the same forces DemForcesStage and DemGatherPairsStage applied).
+struct DemContactLoadStage {
+  DemContactView contacts;
+  Real* contact_load;
+  UPF_HD void operator()(std::uint32_t i) const {
+    Real load = 0;
+    for (std::uint32_t k = contacts.offsets[i]; k < contacts.offsets[i + 1]; ++k)
+      if (contacts.touching[k]) load += norm(contacts.force[k]);
+    for (std::uint32_t r = contacts.reverse_offsets[i]; r < contacts.reverse_offsets[i + 1]; ++r)
+      if (contacts.touching[contacts.reverse[r]]) load += norm(contacts.force[contacts.reverse[r]]);
+    contact_load[i] = load;
   }
 };
 

@@ -30,6 +30,7 @@ struct DemStepSetup {
   bool liquid_force = false;  // the liquid takes the reactions (liquid_force)
   std::vector<Real> liquid_density, liquid_viscosity;   // by material
   std::string radius, angular_velocity, force, torque;  // the solver's fields
+  std::string wall_normal, wall_shear, contact_load;    // recorded for export
 };
 
 }  // namespace upf

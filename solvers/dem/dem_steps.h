@@ -31,17 +31,36 @@ struct DemArrays {
   Vec3* force;                   // on each grain, the last sub-step's
   Vec3* torque;
   Vec3* boundary_force;  // the reactions on rigid particles; null: none wanted
+  // Recorded for export (DemContactRecord); null: not recorded.
+  Vec3* wall_normal;
+  Vec3* wall_shear;
+  Real* contact_load;
 };
 
-// Contact, gravity and fluid forces at the current state (the fluid force added to the step's
-// average with weight `fluid_weight`), then each grain's share of the pairs its partners hold.
+// Contact, gravity and fluid forces at the current state (the fluid force and the walls' forces
+// added to the step's averages with weight `weight`), then each grain's share of the pairs its
+// partners hold. `first`: the step's first sub-step, where the walls' averages start again;
+// `last`: its last, whose contact loads are recorded.
 template <class Executor>
-void run_dem_forces(const Executor& exec, const DemArrays& a, Real h, Real t_in_step,
-                    Real fluid_weight) {
-  exec.run(a.owned, DemForcesStage{a.model, a.contacts, a.pairs, a.x, a.v, a.w, a.mass, a.radius,
-                                   a.type, a.material, a.boxes, a.gravity, h, t_in_step, a.fluid,
-                                   fluid_weight, a.fluid_force, a.force, a.torque});
+void run_dem_forces(const Executor& exec, const DemArrays& a, Real h, Real t_in_step, Real weight,
+                    bool first, bool last) {
+  DemContactRecord record;
+  record.wall_normal = a.wall_normal;
+  record.wall_shear = a.wall_normal ? a.wall_shear : nullptr;
+  record.weight = weight;
+  record.restart = first;
+  exec.run(a.owned,
+           DemForcesStage{a.model,  a.contacts, a.pairs,       a.x,     a.v,       a.w,   a.mass,
+                          a.radius, a.type,     a.material,    a.boxes, a.gravity, h,     t_in_step,
+                          a.fluid,  weight,     a.fluid_force, a.force, a.torque,  record});
   exec.run(a.owned, DemGatherPairsStage{a.contacts, a.force, a.torque});
+  if (last && a.contact_load) exec.run(a.owned, DemContactLoadStage{a.contacts, a.contact_load});
+}
+
+// The forces at the state a run starts from, which velocity Verlet's first half kick needs.
+template <class Executor>
+void run_dem_first_forces(const Executor& exec, const DemArrays& a, Real h) {
+  run_dem_forces(exec, a, h, 0, 0, true, true);
 }
 
 // v += F h_kick / m, w += tau h_kick / I, then x += v h_drift.
@@ -59,7 +78,7 @@ void run_dem_substeps(const Executor& exec, const DemArrays& a, Real dt, int sub
   for (int k = 0; k < substeps; ++k) {
     run("dem_integration", [&] { run_dem_kick_drift(exec, a, Real(0.5) * h, h); });
     run("dem_contacts", [&] {
-      run_dem_forces(exec, a, h, Real(k + 1) * h, h / dt);
+      run_dem_forces(exec, a, h, Real(k + 1) * h, h / dt, k == 0, k + 1 == substeps);
       if (a.boundary_force)
         exec.run(a.rigid, DemBoundaryReactionStage{a.contacts, h / dt, a.boundary_force});
     });

@@ -54,7 +54,8 @@ class Checkpoint : public Cli {
       ++files;
     }
     EXPECT_GT(files, 10);
-    for (const char* f : {"particles.pvd", "bodies.csv", "body_forces.csv", "probes.csv"})
+    for (const char* f :
+         {"particles.pvd", "bodies.csv", "body_forces.csv", "probes.csv", "dem_linear_walls.csv"})
       EXPECT_EQ(bytes_of(a / f), bytes_of(b / f)) << f;
   }
   fs::path scene_;

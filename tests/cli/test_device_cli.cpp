@@ -1,6 +1,7 @@
 // `upf run --device`: the device pipeline's CPU instantiation writes the same files, byte for
 // byte, as the CPU executor (docs/device.md); a device that cannot run refuses before anything is
 // written, with exit code 2 and the reason.
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -48,6 +49,32 @@ TEST_F(DeviceCli, OmpWritesTheCpuRunsFramesProbesAndMetricsByteForByte) {
     ++rows;
   }
   EXPECT_GT(rows, 50);
+}
+
+// Grains: the frames (with the contact load field) and the table of the walls' forces
+// (dem_linear_walls.csv) are the CPU run's, byte for byte.
+TEST_F(DeviceCli, OmpWritesTheCpuRunsGrainFramesAndWallForces) {
+  std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / "sand_pile.json");
+  const std::string scene = write(nlohmann::json::parse(in));
+  const fs::path cpu = dir_ / "cpu", omp = dir_ / "omp";
+  const std::string opts = " -q -j 2 --end 0.1 --set /output/fps=100 --out ";
+  const Result a = run_upf("run " + scene + opts + cpu.string());
+  ASSERT_EQ(a.code, 0) << a.output;
+  const Result b = run_upf("run " + scene + opts + omp.string() + " --device omp");
+  ASSERT_EQ(b.code, 0) << b.output;
+  for (const auto& entry : fs::directory_iterator(cpu / "frames"))
+    EXPECT_TRUE(contents(entry.path()) == contents(omp / "frames" / entry.path().filename()))
+        << entry.path().filename();
+  EXPECT_NE(contents(cpu / "frames" / "frame_00010.vtp").find("dem.contact_load"),
+            std::string::npos);
+  const std::string walls = contents(cpu / "dem_linear_walls.csv");
+  EXPECT_EQ(walls.rfind("t,x_min_normal,x_max_normal,y_min_normal,y_max_normal,z_min_normal,"
+                        "z_max_normal,shear_x,shear_y,shear_z\n",
+                        0),
+            0u)
+      << walls.substr(0, 200);
+  EXPECT_GT(std::count(walls.begin(), walls.end(), '\n'), 20);
+  EXPECT_EQ(walls, contents(omp / "dem_linear_walls.csv"));
 }
 
 // The scene's "device" key picks the device when --device does not; its errors name the key.
