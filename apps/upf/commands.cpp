@@ -12,6 +12,7 @@
 #include "checkpoint_options.h"
 #include "device/device_pipelines.h"
 #include "framework/checkpoint/checkpoint_file.h"
+#include "framework/compare/compare_plan_file.h"
 #include "framework/compare/compare_report.h"
 #include "framework/compare/comparison.h"
 #include "framework/compare/report_table.h"
@@ -164,13 +165,155 @@ std::filesystem::path plot_script(const CompareArgs& args) {
   if (const char* env = std::getenv("UPF_PLOT_SCRIPT"); env && *env) return env;
   return UPF_PLOT_SCRIPT;
 }
+
+// The report of `comparison` into its directory and the table on standard output; exit code 1
+// when the plots are missing.
+int report_comparison(const Comparison& comparison, const std::filesystem::path& out_dir,
+                      const CompareArgs& args) {
+  const PlotOutcome plots = write_compare_report(comparison, out_dir, plot_script(args));
+  std::printf("%s", format_text_table(make_report_table(comparison)).c_str());
+  const std::string out = out_dir.string();
+  std::printf("report: %s/report.md, %s/report.html, %s/report.json\n", out.c_str(), out.c_str(),
+              out.c_str());
+  if (!plots.ok) {
+    std::fprintf(stderr, "error: the plots are missing: %s\n(the tables were written)\n",
+                 plots.error.c_str());
+    return static_cast<int>(ExitCode::Failure);
+  }
+  return 0;
+}
+
+// The runs of OUT/plan.json, checked again against this build's solvers.
+std::vector<SolverRunPlan> planned_runs(const ComparePlanFile& plan,
+                                        const std::filesystem::path& out_dir,
+                                        const Registry& registry) {
+  const SceneDescription scene = read_scene(plan.scene, registry, plan.scene_file.string());
+  return plan_comparison(scene, registry, plan.solvers,
+                         (out_dir / kComparePlanFile).string() + ":/solvers");
+}
+
+CompareOptions split_options(const ComparePlanFile& plan, const CompareArgs& args) {
+  CompareOptions options;
+  options.out_dir = args.out_dir;
+  options.surface_mesher = run_surface_mesher;
+  options.threads = args.threads > 0 ? args.threads : plan.threads;
+  options.end_time = plan.end_time;
+  options.write_frames = plan.write_frames;
+  return options;
+}
+
+// `upf compare --task K`: the plan's run K, as the one-process comparison runs it.
+int compare_task_command(const CompareArgs& args) {
+  const Registry registry = make_app_registry();
+  const ComparePlanFile plan = read_compare_plan(args.out_dir);
+  const auto runs = planned_runs(plan, args.out_dir, registry);
+  const int k = *args.task;
+  if (k < 0 || std::size_t(k) >= runs.size())
+    throw InputError(
+        "--task", "task " + std::to_string(k) + " is outside the plan's " +
+                      std::to_string(runs.size()) + " runs (0.." + std::to_string(runs.size() - 1) +
+                      ") in " + (std::filesystem::path(args.out_dir) / kComparePlanFile).string());
+  CompareOptions options = split_options(plan, args);
+  std::optional<ProgressReporter> progress;
+  if (!args.quiet) {
+    std::fprintf(stderr, "[task %d of 0..%zu] %s\n", k, runs.size() - 1, runs[k].solver.c_str());
+    progress.emplace(stderr);
+    options.on_progress = [&](const RunProgress& p) { progress->update(p); };
+  }
+  CompareRow row;
+  try {
+    row = run_compare_entry(runs[std::size_t(k)], registry, options);
+  } catch (...) {
+    if (progress) progress->finish();
+    throw;
+  }
+  if (progress) progress->finish();
+  std::printf("%s: %s (%.2f s wall) in %s\n", row.solver.c_str(), status_text(row).c_str(),
+              row.result.wall_seconds, (options.out_dir / row.solver).string().c_str());
+  return 0;
+}
+
+// `upf compare --collect`: the report of the plan's runs, once every one has finished.
+int compare_collect_command(const CompareArgs& args) {
+  const Registry registry = make_app_registry();
+  const ComparePlanFile plan = read_compare_plan(args.out_dir);
+  const auto runs = planned_runs(plan, args.out_dir, registry);
+  const CompareOptions options = split_options(plan, args);
+  Comparison comparison = start_comparison(runs, options);
+  comparison.date = plan.date;
+  std::vector<InputProblem> missing;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    try {
+      add_compare_row(comparison,
+                      read_compare_row(options.out_dir, runs[k].solver, comparison.probes));
+    } catch (const InputError& e) {
+      for (const auto& p : e.problems())
+        missing.push_back({p.where, p.message + " (task " + std::to_string(k) + ")"});
+    }
+  }
+  if (!missing.empty()) throw InputError(std::move(missing));
+  return report_comparison(comparison, options.out_dir, args);
+}
+
+// `upf compare SCENE --plan`: OUT/plan.json, and how to run it.
+int compare_plan_command(const CompareArgs& args, const std::vector<SolverRunPlan>& runs) {
+  ComparePlanFile plan;
+  plan.scene_file = std::filesystem::absolute(args.scene);
+  plan.scene = read_scene_json(args.scene);
+  std::vector<SceneOverride> overrides;
+  for (const std::string& s : args.sets) overrides.push_back(parse_override(s));
+  apply_overrides(plan.scene, overrides);
+  for (const auto& r : runs) plan.solvers.push_back(r.solver);
+  plan.end_time = args.end_time;
+  plan.threads = args.threads;
+  plan.write_frames = !args.no_frames;
+  plan.date = utc_now_iso8601();
+  write_compare_plan(args.out_dir, plan);
+  const std::string out = args.out_dir;
+  std::printf("planned %zu runs in %s/%s:", runs.size(), out.c_str(), kComparePlanFile);
+  for (std::size_t k = 0; k < runs.size(); ++k) std::printf(" %zu %s", k, runs[k].solver.c_str());
+  std::printf(
+      "\nrun each (any order, any machine that sees %s):  upf compare --task K --out %s   "
+      "(K = 0..%zu)\n"
+      "as a Slurm job array:  sbatch --array=0-%zu scripts/slurm/compare-array.sbatch %s\n"
+      "then the report:  upf compare --collect --out %s\n",
+      out.c_str(), out.c_str(), runs.size() - 1, runs.size() - 1, out.c_str(), out.c_str());
+  return 0;
+}
+
+void check_split_options(const CompareArgs& args) {
+  const int modes = int(args.plan) + int(args.task.has_value()) + int(args.collect);
+  if (modes > 1) throw InputError("upf compare", "give one of --plan, --task and --collect");
+  if (args.task || args.collect) {
+    const char* mode = args.task ? "--task" : "--collect";
+    std::vector<InputProblem> problems;
+    auto refuse = [&](bool given, const std::string& what) {
+      if (given)
+        problems.push_back({mode, what + " comes from the plan (" + std::string(kComparePlanFile) +
+                                      "): leave it out, or plan again"});
+    };
+    refuse(!args.scene.empty(), "the scene");
+    refuse(args.solvers_given, "--solvers");
+    refuse(!args.sets.empty(), "--set");
+    refuse(args.end_time.has_value(), "--end");
+    refuse(args.no_frames, "--no-frames");
+    if (!problems.empty()) throw InputError(std::move(problems));
+  } else if (args.scene.empty()) {
+    throw InputError("upf compare", "give a scene file (or --task K / --collect with --out DIR)");
+  }
+}
+
 }  // namespace
 
 int compare_command(const CompareArgs& args) {
+  check_split_options(args);
+  if (args.task) return compare_task_command(args);
+  if (args.collect) return compare_collect_command(args);
   const Registry registry = make_app_registry();
   const SceneDescription scene = load_with_overrides(args.scene, args.sets, registry).scene;
   const auto plan = plan_comparison(
       scene, registry, args.solvers_given ? args.solvers : solvers_for_scene(scene, registry));
+  if (args.plan) return compare_plan_command(args, plan);
 
   CompareOptions options;
   options.out_dir = args.out_dir;
@@ -200,17 +343,7 @@ int compare_command(const CompareArgs& args) {
     throw;
   }
 
-  const PlotOutcome plots = write_compare_report(comparison, options.out_dir, plot_script(args));
-  std::printf("%s", format_text_table(make_report_table(comparison)).c_str());
-  const std::string out = options.out_dir.string();
-  std::printf("report: %s/report.md, %s/report.html, %s/report.json\n", out.c_str(), out.c_str(),
-              out.c_str());
-  if (!plots.ok) {
-    std::fprintf(stderr, "error: the plots are missing: %s\n(the tables were written)\n",
-                 plots.error.c_str());
-    return static_cast<int>(ExitCode::Failure);
-  }
-  return 0;
+  return report_comparison(comparison, options.out_dir, args);
 }
 
 int validate_command(const std::vector<std::string>& files, const std::vector<std::string>& sets) {

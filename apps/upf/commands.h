@@ -36,6 +36,11 @@ struct CompareArgs {
   bool no_frames = false;
   std::string plot_script;        // empty: $UPF_PLOT_SCRIPT, else the source tree's script
   std::vector<std::string> sets;  // --set POINTER=VALUE overrides
+  // A comparison split over processes (compare_plan_file.h): write OUT/plan.json only; run the
+  // plan's run K; or report on the plan's finished runs.
+  bool plan = false;
+  std::optional<int> task;
+  bool collect = false;
 };
 
 int run_command(const RunArgs& args);

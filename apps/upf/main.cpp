@@ -7,6 +7,7 @@
 //   upf view SCENE_OR_RUN [--size WxH] [--threads N] [--play]
 //            [--screenshot FILE.png [--exit-after N]]
 //   upf compare SCENE [--solvers A,B,...] [--out DIR] [--threads N] [--end T] [--no-frames] [-q]
+//   upf compare SCENE ... --plan; upf compare --task K --out DIR; upf compare --collect --out DIR
 //   upf validate SCENE... [--set PTR=VALUE]
 //   upf info [--markdown]
 // Exit codes: 0 ok, 1 other failure (output, compare's plots), 2 bad input, 3 unstable run,
@@ -120,8 +121,14 @@ Examples:
   upf compare samples/dam_break.json --solvers pcisph,dfsph,iisph --end 0.5 --threads 2
   upf compare samples/hydrostatic_tank.json --set /time/end=0.5 --no-frames
 
+Split over processes (a Slurm job array, GNU parallel; docs/compare.md):
+  upf compare samples/dam_break.json --solvers pcisph,dfsph --out runs --plan
+  upf compare --task 0 --out runs        (and --task 1, anywhere that sees runs/)
+  upf compare --collect --out runs       the same report
+
 Exit codes: 0 ok (an unstable solver gets its row), 1 plots missing, 2 bad input.)");
-  compare->add_option("scene", compare_args.scene, "scene file (JSON)")->required();
+  compare->add_option("scene", compare_args.scene,
+                      "scene file (JSON); not with --task or --collect, which read OUT/plan.json");
   auto* solvers =
       compare
           ->add_option("--solvers", compare_args.solvers,
@@ -138,6 +145,13 @@ Exit codes: 0 ok (an unstable solver gets its row), 1 plots missing, 2 bad input
       ->add_option("--set", compare_args.sets,
                    "override a scene value by JSON pointer, as `upf run --set` (repeatable)")
       ->allow_extra_args(false);
+  compare->add_flag("--plan", compare_args.plan,
+                    "write OUT/plan.json and run nothing: each run is then one --task");
+  compare->add_option("--task", compare_args.task,
+                      "run the plan's run K into OUT/<solver>/ (K from 0; a Slurm array's "
+                      "$SLURM_ARRAY_TASK_ID)");
+  compare->add_flag("--collect", compare_args.collect,
+                    "write the report of the plan's runs once every one has finished");
 
   upf::viewer::ViewOptions view_options;
   auto* view = app.add_subcommand(

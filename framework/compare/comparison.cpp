@@ -7,7 +7,6 @@
 
 namespace upf {
 
-namespace {
 std::string utc_now_iso8601() {
   const std::time_t now = std::time(nullptr);
   std::tm utc{};
@@ -16,11 +15,9 @@ std::string utc_now_iso8601() {
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
   return text;
 }
-}  // namespace
 
-Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry& registry,
-                          const CompareOptions& options) {
-  if (plan.empty()) throw std::invalid_argument("run_comparison: no solver to run");
+Comparison start_comparison(const std::vector<SolverRunPlan>& plan, const CompareOptions& options) {
+  if (plan.empty()) throw std::invalid_argument("start_comparison: no solver to run");
   const SceneDescription& scene = plan.front().scene;
   Comparison c;
   c.scene = scene.name;
@@ -31,25 +28,39 @@ Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry
     c.probes.push_back(p.name);
     c.probe_units.push_back(probe_unit(p.kind));
   }
+  return c;
+}
 
+CompareRow run_compare_entry(const SolverRunPlan& entry, const Registry& registry,
+                             const CompareOptions& options) {
+  RunOptions run;
+  run.out_dir = options.out_dir / entry.solver;
+  run.threads = options.threads;
+  run.surface_mesher = options.surface_mesher;
+  run.end_time = options.end_time;
+  run.write_frames = options.write_frames;
+  run.on_progress = options.on_progress;
+  run.throw_on_instability = false;  // an unstable solver is a result of the comparison
+  run.final_checkpoint = false;
+  return {entry.solver, run_simulation(entry.scene, registry, run)};
+}
+
+void add_compare_row(Comparison& c, CompareRow row) {
+  // Every run builds the same particles: any row gives the counts.
+  c.liquid_particles = row.result.liquid_particles;
+  c.total_particles = row.result.total_particles;
+  c.threads = row.result.threads;
+  c.rows.push_back(std::move(row));
+}
+
+Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry& registry,
+                          const CompareOptions& options) {
+  Comparison c = start_comparison(plan, options);
   for (std::size_t i = 0; i < plan.size(); ++i) {
     if (options.on_run_start) options.on_run_start(plan[i], i, plan.size());
-    RunOptions run;
-    run.out_dir = options.out_dir / plan[i].solver;
-    run.threads = options.threads;
-    run.surface_mesher = options.surface_mesher;
-    run.end_time = options.end_time;
-    run.write_frames = options.write_frames;
-    run.on_progress = options.on_progress;
-    run.throw_on_instability = false;  // an unstable solver is a result of the comparison
-    run.final_checkpoint = false;
-    CompareRow row{plan[i].solver, run_simulation(plan[i].scene, registry, run)};
-    // Every run builds the same particles with the same threads: any row gives the counts.
-    c.liquid_particles = row.result.liquid_particles;
-    c.total_particles = row.result.total_particles;
-    c.threads = row.result.threads;
+    CompareRow row = run_compare_entry(plan[i], registry, options);
     if (options.on_run_end) options.on_run_end(row);
-    c.rows.push_back(std::move(row));
+    add_compare_row(c, std::move(row));
   }
   return c;
 }

@@ -60,4 +60,14 @@ struct CompareOptions {
 Comparison run_comparison(const std::vector<SolverRunPlan>& plan, const Registry& registry,
                           const CompareOptions& options);
 
+// The pieces of run_comparison, for a comparison split over processes (compare_plan_file.h):
+// the facts without rows (the date now), one run into OUT/<solver>/, and a row added.
+Comparison start_comparison(const std::vector<SolverRunPlan>& plan, const CompareOptions& options);
+CompareRow run_compare_entry(const SolverRunPlan& entry, const Registry& registry,
+                             const CompareOptions& options);
+void add_compare_row(Comparison& comparison, CompareRow row);
+
+// Now, in UTC, ISO 8601: a comparison's date.
+std::string utc_now_iso8601();
+
 }  // namespace upf

@@ -166,3 +166,90 @@ TEST_F(Compare, MissingPlotsKeepTheTablesAndExitOne) {
 }
 
 }  // namespace
+
+namespace {
+
+// report.json without what differs from one process to the next: timings and the date.
+nlohmann::json without_timings(nlohmann::json report) {
+  report.erase("date");
+  report.erase("plots");
+  for (auto& row : report["rows"])
+    for (const char* key : {"wall_time_s", "fluid_particle_steps_per_second",
+                            "wall_seconds_per_simulated_second", "threads"})
+      row.erase(key);
+  report.erase("threads");
+  return report;
+}
+
+// Split over processes, as a Slurm job array runs it: the plan, its tasks in any order (here
+// last first, one at two threads), then the report: the same figures as one `upf compare`.
+TEST_F(Compare, APlannedComparisonRunAsTasksGivesTheSameReport) {
+  const std::string scene = small_scene(0.05);
+  const std::string solvers = " --solvers pcisph,wcsph --no-frames -q";
+  const fs::path split = dir_ / "split";
+  const Result whole =
+      run_upf("compare " + scene + solvers + " --threads 1 --out " + out().string());
+  ASSERT_EQ(whole.code, 0) << whole.output;
+
+  const Result plan =
+      run_upf("compare " + scene + solvers + " --threads 1 --plan --out " + split.string());
+  ASSERT_EQ(plan.code, 0) << plan.output;
+  EXPECT_NE(plan.output.find("planned 2 runs"), std::string::npos) << plan.output;
+  EXPECT_NE(plan.output.find("sbatch --array=0-1"), std::string::npos) << plan.output;
+  EXPECT_FALSE(fs::exists(split / "pcisph")) << "--plan runs nothing";
+
+  // Collecting before every task has run names what is missing.
+  const Result early = run_upf("compare --collect --out " + split.string());
+  EXPECT_EQ(early.code, 2) << early.output;
+  EXPECT_NE(early.output.find("(task 0)"), std::string::npos) << early.output;
+  EXPECT_NE(early.output.find("(task 1)"), std::string::npos) << early.output;
+
+  const Result t1 = run_upf("compare --task 1 -q --threads 2 --out " + split.string());
+  ASSERT_EQ(t1.code, 0) << t1.output;
+  const Result t0 = run_upf("compare --task 0 -q --out " + split.string());
+  ASSERT_EQ(t0.code, 0) << t0.output;
+  const Result collected = run_upf("compare --collect --out " + split.string());
+  ASSERT_EQ(collected.code, 0) << collected.output;
+
+  const auto a = read_json(out() / "report.json"), b = read_json(split / "report.json");
+  EXPECT_EQ(without_timings(a), without_timings(b));
+  EXPECT_EQ(b["rows"][0]["solver"], "pcisph");
+  EXPECT_EQ(b["rows"][1]["solver"], "wcsph");
+  EXPECT_EQ(read_text(out() / "pcisph" / "probes.csv"), read_text(split / "pcisph" / "probes.csv"));
+  EXPECT_EQ(read_text(out() / "wcsph" / "probes.csv"), read_text(split / "wcsph" / "probes.csv"));
+}
+
+TEST_F(Compare, SplitComparisonsRefuseBadTasksAndMixedOptions) {
+  const std::string scene = small_scene(0.05);
+  const fs::path split = dir_ / "split";
+  const std::vector<std::pair<std::string, std::string>> before_plan = {
+      {"compare --task 0 --out " + split.string(), "no comparison planned here"},
+      {"compare --collect --out " + split.string(), "no comparison planned here"},
+      {"compare --out " + split.string(), "give a scene file"},
+  };
+  for (const auto& [args, needle] : before_plan) {
+    const Result r = run_upf(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output;
+  }
+  ASSERT_EQ(
+      run_upf("compare " + scene + " --solvers pcisph --plan -q --out " + split.string()).code, 0);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"compare --task 3 --out " + split.string(), "task 3 is outside the plan's 1 runs (0..0)"},
+      {"compare --task 0 --plan --out " + split.string(),
+       "give one of --plan, --task and --collect"},
+      {"compare " + scene + " --task 0 --out " + split.string(), "the scene comes from the plan"},
+      {"compare --collect --end 1 --out " + split.string(), "--end comes from the plan"},
+  };
+  for (const auto& [args, needle] : cases) {
+    const Result r = run_upf(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(needle), std::string::npos) << args << "\n" << r.output;
+  }
+  std::ofstream(split / "plan.json") << "{ broken";
+  const Result broken = run_upf("compare --task 0 --out " + split.string());
+  EXPECT_EQ(broken.code, 2) << broken.output;
+  EXPECT_NE(broken.output.find("plan.json: not valid JSON"), std::string::npos) << broken.output;
+}
+
+}  // namespace
