@@ -57,7 +57,7 @@ TEST_F(DeviceCli, OmpWritesTheCpuRunsGrainFramesAndWallForces) {
   std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / "sand_pile.json");
   const std::string scene = write(nlohmann::json::parse(in));
   const fs::path cpu = dir_ / "cpu", omp = dir_ / "omp";
-  const std::string opts = " -q -j 2 --end 0.1 --set /output/fps=100 --out ";
+  const std::string opts = " -q -j 1 --end 0.1 --set /output/fps=100 --out ";
   const Result a = run_upf("run " + scene + opts + cpu.string());
   ASSERT_EQ(a.code, 0) << a.output;
   const Result b = run_upf("run " + scene + opts + omp.string() + " --device omp");

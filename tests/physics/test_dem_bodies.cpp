@@ -8,6 +8,7 @@
 
 #include "coupling/bodies/rigid_body_system.h"
 #include "scene_helpers.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -64,6 +65,9 @@ TEST(DemBodies, GrainsAndBodyConserveMomentumWithoutGravity) {
       "cube force now %.3e N\n",
       exchanged, total0.norm(), drift, drift / exchanged, bodies.state(0).fluid_force.norm());
   EXPECT_GT(exchanged, 0.1 * total0.norm());  // the grains did hit the cube
+  record_validation("drift of grains + body momentum / momentum exchanged",
+                    "Newton's third law (contact pairs exactly opposite)", "0", "below 1e-3",
+                    drift / exchanged);
   EXPECT_LT(drift, 1e-3 * exchanged);
 }
 

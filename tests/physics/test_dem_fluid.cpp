@@ -9,6 +9,7 @@
 #include "coupling_scenes.h"
 #include "scene_helpers.h"
 #include "solvers/dem/dem_fluid_drag.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -60,6 +61,11 @@ TEST(DemFluid, BeadSettlesInWaterAtTheDiFeliceTerminalVelocity) {
   const double in_air = std::sqrt(2 * g * 0.1);  // after falling 0.1 m in air
   std::printf("settling speed %.4f m/s, Di Felice terminal %.4f m/s (in air after 0.1 m: %.2f)\n",
               settling, terminal, in_air);
+  char expected[32];
+  std::snprintf(expected, sizeof expected, "%.4f m/s", terminal);
+  record_validation("settling speed of a bead (density 1200, r = 5 mm) in water",
+                    "Di Felice 1994 drag: terminal velocity", expected, "within 10 %", settling,
+                    "m/s");
   EXPECT_NEAR(settling, terminal, 0.10 * terminal);
   EXPECT_LT(settling, 0.5 * in_air);  // slower in water than in air
 }
@@ -79,6 +85,9 @@ TEST(DemFluid, BeadAndWaterConserveMomentumWithoutGravity) {
   std::printf("bead lost %.4e kg m/s of %.4e; drift of bead + water %.3e (%.2e)\n", lost,
               grain0.norm(), drift, drift / lost);
   EXPECT_GT(lost, 0.05 * grain0.norm());
+  record_validation("drift of bead + water momentum / momentum the bead lost",
+                    "Newton's third law (Di Felice 1994 drag, its opposite on the liquid)", "0",
+                    "below 1e-3", drift / lost);
   EXPECT_LT(drift, 1e-3 * lost);
 }
 

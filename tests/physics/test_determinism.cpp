@@ -77,8 +77,8 @@ std::vector<double> body_states_after(nlohmann::json doc, int threads, int steps
   std::vector<double> all;
   for (std::size_t b = 0; b < bodies.bodies().size(); ++b) {
     const BodyState& s = bodies.state(b);
-    for (const Eigen::Vector3d* v : {&s.position, &s.velocity, &s.angular_velocity,
-                                     &s.fluid_force, &s.fluid_torque})
+    for (const Eigen::Vector3d* v :
+         {&s.position, &s.velocity, &s.angular_velocity, &s.fluid_force, &s.fluid_torque})
       all.insert(all.end(), v->data(), v->data() + 3);
     all.insert(all.end(), s.orientation.coeffs().data(), s.orientation.coeffs().data() + 4);
   }

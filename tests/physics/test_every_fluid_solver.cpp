@@ -21,6 +21,7 @@
 #include "apps/upf/app_registry.h"
 #include "coupling_scenes.h"
 #include "scene_helpers.h"
+#include "validation_record.h"
 
 namespace upf::testing {
 namespace {
@@ -89,6 +90,9 @@ TEST_P(EveryFluidSolver, HoldsUpAFloatingCube) {
   force /= n;
   std::printf("%s: mean fluid force on the cube %.2f N, weight %.2f N\n", GetParam().c_str(), force,
               weight);
+  record_validation("mean fluid force on a half-submerged cube (density 500) / its weight",
+                    "Archimedes (Akinci et al. 2012 reactions)", "1", "within 25 %",
+                    force / weight);
   EXPECT_NEAR(force, weight, 0.25 * weight);
 }
 
@@ -117,6 +121,9 @@ TEST_P(EveryFluidSolver, FluidAndBodyConserveMomentumOver1000Steps) {
       GetParam().c_str(), steps, exchanged, drift, drift / exchanged);
   EXPECT_GE(steps, 250);
   EXPECT_GT(exchanged, 0.1 * body0.norm());  // the cube did hit the water
+  record_validation("drift of fluid + body momentum / momentum exchanged",
+                    "Newton's third law (Akinci et al. 2012 reactions)", "0", "below 1e-3",
+                    drift / exchanged);
   EXPECT_LT(drift, 1e-3 * exchanged);
 }
 
@@ -135,6 +142,9 @@ TEST_P(EveryFluidSolver, TakesUpTheMomentumAGrainLosesToDrag) {
   std::printf("%s: bead lost %.4e kg m/s of %.4e; drift of bead + water %.3e (%.2e)\n",
               GetParam().c_str(), lost, grain0.norm(), drift, drift / lost);
   EXPECT_GT(lost, 0.05 * grain0.norm());
+  record_validation("drift of bead + water momentum / momentum the bead lost",
+                    "Newton's third law (Di Felice 1994 drag, its opposite on the liquid)", "0",
+                    "below 1e-3", drift / lost);
   EXPECT_LT(drift, 1e-3 * lost);
 }
 
@@ -155,14 +165,19 @@ TEST_P(EveryFluidSolver, FrameZeroShowsTheInitialDensityAndTheFirstStepIgnoresIt
   const std::vector<Real>& density = p.scalar_field("density");
   const double surface = 0.48, support = 0.08;
   std::size_t interior = 0;
+  double worst = 0;  // kg/m^3: the largest interior |density - 0.99997 rho0|
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.type[i] != ParticleType::Liquid) continue;
     EXPECT_GT(density[i], 500) << "particle " << p.id[i];
     if (double(p.position[i].y) < surface - support) {
       ++interior;
+      worst = std::max(worst, std::abs(double(density[i]) - 1000.0 * 0.99997));
       EXPECT_NEAR(density[i], 1000.0 * 0.99997, 0.1) << "particle " << p.id[i];
     }
   }
+  record_validation("largest frame-0 |density - 0.99997 rho0|, a support radius down",
+                    "cubic spline lattice sum, 0.99997 rho0", "0 kg/m^3", "within 0.1 kg/m^3",
+                    worst, "kg/m^3");
   EXPECT_GT(interior, 500u);
   std::vector<Real>& erased = zeroed.world->particles().scalar_field("density");
   std::fill(erased.begin(), erased.end(), Real(0));
