@@ -95,6 +95,22 @@ Impact measure_pair_impact(TestWorld& t, double dt, double r) {
       t, dt, [&] { return gap() < 0; }, approach);
 }
 
+// `what`'s restitution and contact time against the linear model's analytic e and t_c, within
+// 2 %, each recorded.
+void expect_linear_impact(const char* what, double e, double tc, const Impact& i) {
+  char label[96], expected[32];
+  std::snprintf(label, sizeof label, "restitution of %s, e = %.1f", what, e);
+  std::snprintf(expected, sizeof expected, "%.1f", e);
+  record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
+                    i.restitution);
+  std::snprintf(label, sizeof label, "contact time of %s, e = %.1f", what, e);
+  std::snprintf(expected, sizeof expected, "%.4g s", tc);
+  record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
+                    i.contact_time, "s");
+  EXPECT_NEAR(i.restitution, e, 0.02 * e);
+  EXPECT_NEAR(i.contact_time, tc, 0.02 * tc);
+}
+
 TEST(DemLinear, HeadOnImpactOfTwoSpheresMatchesRestitutionAndContactTime) {
   const double r = 0.01, kn = 1e4, density = 2500;
   const double m = density * 4.0 / 3.0 * kPi * r * r * r, m_eff = m / 2;
@@ -112,17 +128,7 @@ TEST(DemLinear, HeadOnImpactOfTwoSpheresMatchesRestitutionAndContactTime) {
     const Impact i = measure_pair_impact(t, dt, r);
     std::printf("linear e = %.1f: restitution %.4f, contact time %.4e s (analytic %.4e)\n", e,
                 i.restitution, i.contact_time, tc);
-    char label[64], expected[32];
-    std::snprintf(label, sizeof label, "restitution of a head-on impact, e = %.1f", e);
-    std::snprintf(expected, sizeof expected, "%.1f", e);
-    record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
-                      i.restitution);
-    std::snprintf(label, sizeof label, "contact time of a head-on impact, e = %.1f", e);
-    std::snprintf(expected, sizeof expected, "%.4g s", tc);
-    record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
-                      i.contact_time, "s");
-    EXPECT_NEAR(i.restitution, e, 0.02 * e);
-    EXPECT_NEAR(i.contact_time, tc, 0.02 * tc);
+    expect_linear_impact("a head-on impact", e, tc, i);
   }
 }
 
@@ -146,17 +152,7 @@ TEST(DemLinear, SphereOnAWallMatchesRestitutionAndContactTime) {
         [&] { return -double(p.velocity[grains(p)[0]].x); });
     std::printf("wall e = %.1f: restitution %.4f, contact time %.4e s (analytic %.4e)\n", e,
                 i.restitution, i.contact_time, tc);
-    char label[64], expected[32];
-    std::snprintf(label, sizeof label, "restitution of a sphere on a wall, e = %.1f", e);
-    std::snprintf(expected, sizeof expected, "%.1f", e);
-    record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
-                      i.restitution);
-    std::snprintf(label, sizeof label, "contact time of a sphere on a wall, e = %.1f", e);
-    std::snprintf(expected, sizeof expected, "%.4g s", tc);
-    record_validation(label, "linear spring-dashpot, analytic", expected, "within 2 %",
-                      i.contact_time, "s");
-    EXPECT_NEAR(i.restitution, e, 0.02 * e);
-    EXPECT_NEAR(i.contact_time, tc, 0.02 * tc);
+    expect_linear_impact("a sphere on a wall", e, tc, i);
   }
 }
 
