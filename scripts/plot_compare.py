@@ -63,10 +63,14 @@ class Run:
         self.metrics = read_columns(out / row["dir"] / "metrics.csv")
         self.probes = read_columns(out / row["dir"] / "probes.csv")
 
+    def name(self):
+        """The run's name: the solver, or in a sweep the solver with its swept values."""
+        return self.row.get("run", self.row["solver"])
+
     def label(self):
         if self.row["status"] == "unstable" and self.row.get("failure_time_s") is not None:
-            return f'{self.row["solver"]} (unstable at t = {self.row["failure_time_s"]:.4g} s)'
-        return self.row["solver"]
+            return f'{self.name()} (unstable at t = {self.row["failure_time_s"]:.4g} s)'
+        return self.name()
 
     def curve(self, axes, columns, name, scale=1.0, **style):
         t = columns.get("t", [])
@@ -140,11 +144,11 @@ def plot_accuracy_cost(report, runs, spec, path):
         cost = run.row.get("wall_seconds_per_simulated_second") or 0
         error = run.row.get("max_density_error")
         if run.row["status"] != "completed" or cost <= 0 or error is None:
-            left_out.append(run.row["solver"])
+            left_out.append(run.name())
             continue
         axes.plot([cost], [100.0 * error], marker="o", markersize=10, linestyle="none",
                   color=run.colour, label=run.label())
-        axes.annotate(run.row["solver"], (cost, 100.0 * error), textcoords="offset points",
+        axes.annotate(run.name(), (cost, 100.0 * error), textcoords="offset points",
                       xytext=(8, 6), color=run.colour)
     if left_out:
         axes.text(0.99, 0.01, "not shown (not completed): " + ", ".join(left_out),

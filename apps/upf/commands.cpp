@@ -183,13 +183,78 @@ int report_comparison(const Comparison& comparison, const std::filesystem::path&
   return 0;
 }
 
+// `document` with `sets` (--set or --vary arguments) applied.
+nlohmann::json with_sets(nlohmann::json document, const std::vector<std::string>& sets) {
+  std::vector<SceneOverride> overrides;
+  for (const std::string& s : sets) overrides.push_back(parse_override(s));
+  apply_overrides(document, overrides);
+  return document;
+}
+
+// The runs of a comparison or sweep: per combination of the --vary values (the first axis
+// slowest), one run per solver, each named after its solver and values.
+struct ComparisonRuns {
+  nlohmann::json document;  // the scene file's document with --set applied
+  std::vector<SolverRunPlan> runs;
+  std::vector<PlannedRun> planned;  // the same runs, as plan.json holds them
+};
+// A swept solver parameter reaches only the solver the scene names for that material: another
+// solver of the comparison runs with its own defaults (with_solver), the same at every value.
+void warn_unreached_sweeps(const nlohmann::json& document, const std::vector<SweepAxis>& axes,
+                           const std::vector<std::string>& solvers) {
+  for (const auto& axis : axes) {
+    const std::string prefix = "/materials/";
+    const auto solver_at = axis.pointer.find("/solver/");
+    if (axis.pointer.rfind(prefix, 0) != 0 || solver_at == std::string::npos) continue;
+    const nlohmann::json::json_pointer where(axis.pointer.substr(0, solver_at + 7));
+    if (!document.contains(where)) continue;
+    const nlohmann::json& named = document.at(where);
+    const std::string scene_solver =
+        named.is_string() ? named.get<std::string>() : named.value("name", std::string());
+    for (const auto& s : solvers)
+      if (s != scene_solver)
+        std::fprintf(stderr,
+                     "warning: --vary %s changes %s's parameters; %s runs with its own defaults, "
+                     "the same at every value\n",
+                     axis.pointer.c_str(), scene_solver.c_str(), s.c_str());
+  }
+}
+
+ComparisonRuns comparison_runs(const CompareArgs& args, const Registry& registry) {
+  ComparisonRuns c;
+  c.document = with_sets(read_scene_json(args.scene), args.sets);
+  const SceneDescription base = read_scene(c.document, registry, args.scene);
+  const std::vector<std::string> solvers =
+      args.solvers_given ? args.solvers : solvers_for_scene(base, registry);
+  std::vector<SweepAxis> axes;
+  for (const auto& v : args.vary) axes.push_back(parse_sweep_axis(v));
+  warn_unreached_sweeps(c.document, axes, solvers);
+  for (const auto& sets : sweep_combinations(axes)) {
+    const SceneDescription scene =
+        sets.empty() ? base : read_scene(with_sets(c.document, sets), registry, args.scene);
+    for (SolverRunPlan& run : plan_comparison(scene, registry, solvers)) {
+      run.name = sweep_run_name(run.solver, axes, sets);
+      c.planned.push_back({run.name, run.solver, sets});
+      c.runs.push_back(std::move(run));
+    }
+  }
+  return c;
+}
+
 // The runs of OUT/plan.json, checked again against this build's solvers.
 std::vector<SolverRunPlan> planned_runs(const ComparePlanFile& plan,
                                         const std::filesystem::path& out_dir,
                                         const Registry& registry) {
-  const SceneDescription scene = read_scene(plan.scene, registry, plan.scene_file.string());
-  return plan_comparison(scene, registry, plan.solvers,
-                         (out_dir / kComparePlanFile).string() + ":/solvers");
+  const std::string where = (out_dir / kComparePlanFile).string() + ":/runs";
+  std::vector<SolverRunPlan> runs;
+  for (const PlannedRun& p : plan.runs) {
+    const SceneDescription scene =
+        read_scene(with_sets(plan.scene, p.sets), registry, plan.scene_file.string());
+    SolverRunPlan run = plan_comparison(scene, registry, {p.solver}, where).front();
+    run.name = p.name;
+    runs.push_back(std::move(run));
+  }
+  return runs;
 }
 
 CompareOptions split_options(const ComparePlanFile& plan, const CompareArgs& args) {
@@ -216,7 +281,7 @@ int compare_task_command(const CompareArgs& args) {
   CompareOptions options = split_options(plan, args);
   std::optional<ProgressReporter> progress;
   if (!args.quiet) {
-    std::fprintf(stderr, "[task %d of 0..%zu] %s\n", k, runs.size() - 1, runs[k].solver.c_str());
+    std::fprintf(stderr, "[task %d of 0..%zu] %s\n", k, runs.size() - 1, runs[k].name.c_str());
     progress.emplace(stderr);
     options.on_progress = [&](const RunProgress& p) { progress->update(p); };
   }
@@ -228,8 +293,8 @@ int compare_task_command(const CompareArgs& args) {
     throw;
   }
   if (progress) progress->finish();
-  std::printf("%s: %s (%.2f s wall) in %s\n", row.solver.c_str(), status_text(row).c_str(),
-              row.result.wall_seconds, (options.out_dir / row.solver).string().c_str());
+  std::printf("%s: %s (%.2f s wall) in %s\n", row.name.c_str(), status_text(row).c_str(),
+              row.result.wall_seconds, (options.out_dir / row.name).string().c_str());
   return 0;
 }
 
@@ -245,7 +310,7 @@ int compare_collect_command(const CompareArgs& args) {
   for (std::size_t k = 0; k < runs.size(); ++k) {
     try {
       add_compare_row(comparison,
-                      read_compare_row(options.out_dir, runs[k].solver, comparison.probes));
+                      read_compare_row(options.out_dir, plan.runs[k], comparison.probes));
     } catch (const InputError& e) {
       for (const auto& p : e.problems())
         missing.push_back({p.where, p.message + " (task " + std::to_string(k) + ")"});
@@ -256,14 +321,12 @@ int compare_collect_command(const CompareArgs& args) {
 }
 
 // `upf compare SCENE --plan`: OUT/plan.json, and how to run it.
-int compare_plan_command(const CompareArgs& args, const std::vector<SolverRunPlan>& runs) {
+int compare_plan_command(const CompareArgs& args, const ComparisonRuns& c) {
+  const std::vector<SolverRunPlan>& runs = c.runs;
   ComparePlanFile plan;
   plan.scene_file = std::filesystem::absolute(args.scene);
-  plan.scene = read_scene_json(args.scene);
-  std::vector<SceneOverride> overrides;
-  for (const std::string& s : args.sets) overrides.push_back(parse_override(s));
-  apply_overrides(plan.scene, overrides);
-  for (const auto& r : runs) plan.solvers.push_back(r.solver);
+  plan.scene = c.document;
+  plan.runs = c.planned;
   plan.end_time = args.end_time;
   plan.threads = args.threads;
   plan.write_frames = !args.no_frames;
@@ -271,7 +334,7 @@ int compare_plan_command(const CompareArgs& args, const std::vector<SolverRunPla
   write_compare_plan(args.out_dir, plan);
   const std::string out = args.out_dir;
   std::printf("planned %zu runs in %s/%s:", runs.size(), out.c_str(), kComparePlanFile);
-  for (std::size_t k = 0; k < runs.size(); ++k) std::printf(" %zu %s", k, runs[k].solver.c_str());
+  for (std::size_t k = 0; k < runs.size(); ++k) std::printf(" %zu %s", k, runs[k].name.c_str());
   std::printf(
       "\nrun each (any order, any machine that sees %s):  upf compare --task K --out %s   "
       "(K = 0..%zu)\n"
@@ -295,6 +358,7 @@ void check_split_options(const CompareArgs& args) {
     refuse(!args.scene.empty(), "the scene");
     refuse(args.solvers_given, "--solvers");
     refuse(!args.sets.empty(), "--set");
+    refuse(!args.vary.empty(), "--vary");
     refuse(args.end_time.has_value(), "--end");
     refuse(args.no_frames, "--no-frames");
     if (!problems.empty()) throw InputError(std::move(problems));
@@ -310,10 +374,9 @@ int compare_command(const CompareArgs& args) {
   if (args.task) return compare_task_command(args);
   if (args.collect) return compare_collect_command(args);
   const Registry registry = make_app_registry();
-  const SceneDescription scene = load_with_overrides(args.scene, args.sets, registry).scene;
-  const auto plan = plan_comparison(
-      scene, registry, args.solvers_given ? args.solvers : solvers_for_scene(scene, registry));
-  if (args.plan) return compare_plan_command(args, plan);
+  const ComparisonRuns runs = comparison_runs(args, registry);
+  if (args.plan) return compare_plan_command(args, runs);
+  const std::vector<SolverRunPlan>& plan = runs.runs;
 
   CompareOptions options;
   options.out_dir = args.out_dir;
@@ -325,13 +388,13 @@ int compare_command(const CompareArgs& args) {
   std::optional<ProgressReporter> progress;
   if (!args.quiet) {
     options.on_run_start = [&](const SolverRunPlan& p, std::size_t i, std::size_t n) {
-      std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, n, p.solver.c_str());
+      std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, n, p.name.c_str());
       progress.emplace(stderr);
     };
     options.on_progress = [&](const RunProgress& p) { progress->update(p); };
     options.on_run_end = [&](const CompareRow& row) {
       progress->finish();
-      std::fprintf(stderr, "%s: %s (%.2f s wall)\n", row.solver.c_str(), status_text(row).c_str(),
+      std::fprintf(stderr, "%s: %s (%.2f s wall)\n", row.name.c_str(), status_text(row).c_str(),
                    row.result.wall_seconds);
     };
   }

@@ -36,6 +36,7 @@ struct CompareArgs {
   bool no_frames = false;
   std::string plot_script;        // empty: $UPF_PLOT_SCRIPT, else the source tree's script
   std::vector<std::string> sets;  // --set POINTER=VALUE overrides
+  std::vector<std::string> vary;  // --vary POINTER=V1,V2,...: a sweep, every combination
   // A comparison split over processes (compare_plan_file.h): write OUT/plan.json only; run the
   // plan's run K; or report on the plan's finished runs.
   bool plan = false;

@@ -120,6 +120,7 @@ Exit codes: 0 ok, 1 output failure, 2 bad input (no run there, unknown field).)"
 Examples:
   upf compare samples/dam_break.json --solvers pcisph,dfsph,iisph --end 0.5 --threads 2
   upf compare samples/hydrostatic_tank.json --set /time/end=0.5 --no-frames
+  upf compare samples/dam_break.json --solvers pcisph --vary /materials/water/solver/eta=0.01,0.002
 
 Split over processes (a Slurm job array, GNU parallel; docs/compare.md):
   upf compare samples/dam_break.json --solvers pcisph,dfsph --out runs --plan
@@ -144,6 +145,11 @@ Exit codes: 0 ok (an unstable solver gets its row), 1 plots missing, 2 bad input
   compare
       ->add_option("--set", compare_args.sets,
                    "override a scene value by JSON pointer, as `upf run --set` (repeatable)")
+      ->allow_extra_args(false);
+  compare
+      ->add_option("--vary", compare_args.vary,
+                   "sweep a scene value: POINTER=V1,V2,... runs every solver at each value "
+                   "(repeatable: every combination), each run named SOLVER,KEY=VALUE")
       ->allow_extra_args(false);
   compare->add_flag("--plan", compare_args.plan,
                     "write OUT/plan.json and run nothing: each run is then one --task");

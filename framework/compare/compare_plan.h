@@ -13,6 +13,9 @@ namespace upf {
 struct SolverRunPlan {
   std::string solver;
   SceneDescription scene;  // the scene with `solver` moving its particle type (with_solver)
+  // The run's name: its row's label and its directory under OUT/. The solver's name, or in a
+  // sweep the solver's with the swept values, "pcisph,eta=0.002".
+  std::string name = solver;
 };
 
 // One run per name, in the order given. An empty list, an empty or repeated name, an unknown
@@ -21,5 +24,24 @@ struct SolverRunPlan {
 std::vector<SolverRunPlan> plan_comparison(const SceneDescription& scene, const Registry& registry,
                                            const std::vector<std::string>& solvers,
                                            const std::string& where = "--solvers");
+
+// A swept value: `--vary POINTER=V1,V2,...` set to one of its values, as `--set POINTER=V`.
+struct SweepAxis {
+  std::string pointer;              // "/materials/water/solver/eta"
+  std::vector<std::string> values;  // as written: "0.01", "0.005"
+  std::string key;                  // in run names: the pointer's last token ("eta")
+};
+
+// "POINTER=V1,V2,...": InputError naming `--vary ARG` without '=', a value or a pointer.
+SweepAxis parse_sweep_axis(const std::string& argument);
+
+// Every combination of the axes' values, as --set arguments ("/a=1"), the first axis slowest;
+// one empty combination without axes.
+std::vector<std::vector<std::string>> sweep_combinations(const std::vector<SweepAxis>& axes);
+
+// A run's name: the solver's, then ",key=value" per axis; characters a directory name should not
+// hold ('/', whitespace, quotes) become '_'.
+std::string sweep_run_name(const std::string& solver, const std::vector<SweepAxis>& axes,
+                           const std::vector<std::string>& sets);
 
 }  // namespace upf

@@ -37,6 +37,12 @@ double number_or_nan(const nlohmann::json& j, const char* key, const std::filesy
   return field<double>(j, key, path);
 }
 
+nlohmann::json runs_json(const std::vector<PlannedRun>& runs) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& r : runs) j.push_back({{"name", r.name}, {"solver", r.solver}, {"set", r.sets}});
+  return j;
+}
+
 }  // namespace
 
 void write_compare_plan(const std::filesystem::path& out_dir, const ComparePlanFile& plan) {
@@ -44,7 +50,7 @@ void write_compare_plan(const std::filesystem::path& out_dir, const ComparePlanF
                       {"date", plan.date},
                       {"scene_file", plan.scene_file.string()},
                       {"scene", plan.scene},
-                      {"solvers", plan.solvers},
+                      {"runs", runs_json(plan.runs)},
                       {"end_time_s", plan.end_time ? nlohmann::json(*plan.end_time) : nullptr},
                       {"threads", plan.threads},
                       {"write_frames", plan.write_frames}};
@@ -66,25 +72,29 @@ ComparePlanFile read_compare_plan(const std::filesystem::path& out_dir) {
   plan.date = field<std::string>(j, "date", path);
   plan.scene_file = field<std::string>(j, "scene_file", path);
   plan.scene = j.at("scene");
-  plan.solvers = field<std::vector<std::string>>(j, "solvers", path);
+  const nlohmann::json runs = field<nlohmann::json>(j, "runs", path);
+  if (!runs.is_array()) throw InputError(path.string() + ":/runs", "not an array of runs");
+  for (const auto& r : runs)
+    plan.runs.push_back({field<std::string>(r, "name", path), field<std::string>(r, "solver", path),
+                         field<std::vector<std::string>>(r, "set", path)});
   if (!j.contains("end_time_s") || !j["end_time_s"].is_null())
     plan.end_time = field<double>(j, "end_time_s", path);
   plan.threads = field<int>(j, "threads", path);
   plan.write_frames = field<bool>(j, "write_frames", path);
-  if (plan.solvers.empty()) throw InputError(path.string() + ":/solvers", "no run in the plan");
+  if (plan.runs.empty()) throw InputError(path.string() + ":/runs", "no run in the plan");
   return plan;
 }
 
-CompareRow read_compare_row(const std::filesystem::path& out_dir, const std::string& solver,
+CompareRow read_compare_row(const std::filesystem::path& out_dir, const PlannedRun& run,
                             const std::vector<std::string>& probes) {
-  const std::filesystem::path path = out_dir / solver / "summary.json";
-  const nlohmann::json j = read_json_file(path, "the run of '" + solver + "' has not finished");
+  const std::filesystem::path path = out_dir / run.name / "summary.json";
+  const nlohmann::json j = read_json_file(path, "the run '" + run.name + "' has not finished");
   RunResult r;
   r.status = field<std::string>(j, "status", path);
   if (r.status == "interrupted")
-    throw InputError(path.string(), "the run of '" + solver +
+    throw InputError(path.string(), "the run '" + run.name +
                                         "' was interrupted: resume it with upf run --resume " +
-                                        (out_dir / solver).string());
+                                        (out_dir / run.name).string());
   if (j.contains("failure") && j["failure"].is_string()) r.failure = j["failure"];
   r.threads = field<int>(j, "threads", path);
   r.steps = field<std::uint64_t>(j, "steps", path);
@@ -105,7 +115,7 @@ CompareRow read_compare_row(const std::filesystem::path& out_dir, const std::str
     r.final_probes.emplace_back(name, final_probes.contains(name)
                                           ? number_or_nan(final_probes, name.c_str(), path)
                                           : std::nan(""));
-  return {solver, std::move(r)};
+  return {run.solver, std::move(r), run.name};
 }
 
 }  // namespace upf

@@ -17,10 +17,17 @@ namespace upf {
 
 inline constexpr const char* kComparePlanFile = "plan.json";
 
+// One run of a plan: its name (row label and directory), its solver, and the sweep's --set
+// arguments applied to the plan's scene before the solver is set.
+struct PlannedRun {
+  std::string name, solver;
+  std::vector<std::string> sets;
+};
+
 struct ComparePlanFile {
   std::filesystem::path scene_file;  // absolute: relative paths in the scene resolve against it
   nlohmann::json scene;              // the scene document with the --set overrides applied
-  std::vector<std::string> solvers;  // run K runs solvers[K]; the report's row order
+  std::vector<PlannedRun> runs;      // task K runs runs[K]; the report's row order
   std::optional<double> end_time;
   int threads = 0;  // 0: OpenMP's default; a task may override it
   bool write_frames = true;
@@ -32,10 +39,10 @@ void write_compare_plan(const std::filesystem::path& out_dir, const ComparePlanF
 // Reads OUT/plan.json; InputError naming the file, and the key, when it is missing or malformed.
 ComparePlanFile read_compare_plan(const std::filesystem::path& out_dir);
 
-// The row of `solver` from its run's OUT/<solver>/summary.json, with the probes in `probes`'
-// order; InputError naming the file when the run has not finished (no summary, or an
-// interrupted one) or the file is not a summary.
-CompareRow read_compare_row(const std::filesystem::path& out_dir, const std::string& solver,
+// The row of `run` from OUT/<run.name>/summary.json, with the probes in `probes`' order;
+// InputError naming the file when the run has not finished (no summary, or an interrupted one)
+// or the file is not a summary.
+CompareRow read_compare_row(const std::filesystem::path& out_dir, const PlannedRun& run,
                             const std::vector<std::string>& probes);
 
 }  // namespace upf

@@ -34,7 +34,7 @@ Comparison start_comparison(const std::vector<SolverRunPlan>& plan, const Compar
 CompareRow run_compare_entry(const SolverRunPlan& entry, const Registry& registry,
                              const CompareOptions& options) {
   RunOptions run;
-  run.out_dir = options.out_dir / entry.solver;
+  run.out_dir = options.out_dir / entry.name;
   run.threads = options.threads;
   run.surface_mesher = options.surface_mesher;
   run.end_time = options.end_time;
@@ -42,7 +42,7 @@ CompareRow run_compare_entry(const SolverRunPlan& entry, const Registry& registr
   run.on_progress = options.on_progress;
   run.throw_on_instability = false;  // an unstable solver is a result of the comparison
   run.final_checkpoint = false;
-  return {entry.solver, run_simulation(entry.scene, registry, run)};
+  return {entry.solver, run_simulation(entry.scene, registry, run), entry.name};
 }
 
 void add_compare_row(Comparison& c, CompareRow row) {

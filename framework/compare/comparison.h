@@ -18,6 +18,7 @@ namespace upf {
 struct CompareRow {
   std::string solver;
   RunResult result;  // unstable: status "unstable", failure, simulated_time = when it failed
+  std::string name = solver;  // the run's name: its label and directory (SolverRunPlan::name)
   bool unstable() const { return result.status == "unstable"; }
 };
 

@@ -21,7 +21,7 @@ std::vector<PlotSpec> plan_plots(const Comparison& c) {
       {"density_error.png", "Density error (average and maximum) vs time", "density_error", "", ""},
       {"dt.png", "Time step vs time", "dt", "", ""},
       {"accuracy_cost.png",
-       "Largest density error vs wall seconds per simulated second, one point per solver",
+       "Largest density error vs wall seconds per simulated second, one point per run",
        "accuracy_cost", "", ""}};
   for (std::size_t i = 0; i < c.probes.size(); ++i) {
     const std::string& name = c.probes[i];

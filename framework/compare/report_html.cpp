@@ -56,7 +56,7 @@ std::string report_html(const Comparison& c, const std::vector<PlotSpec>& plots,
     h += tag("h2", "Failures") + "\n<ul>\n";
     for (const auto& row : c.rows)
       if (row.unstable())
-        h += "<li><strong>" + escape(row.solver) + "</strong>: " + escape(row.result.failure) +
+        h += "<li><strong>" + escape(row.name) + "</strong>: " + escape(row.result.failure) +
              "</li>\n";
     h += "</ul>\n";
   }

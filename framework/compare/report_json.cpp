@@ -15,7 +15,8 @@ nlohmann::json number(double v) {
 nlohmann::json row_json(const CompareRow& row) {
   nlohmann::json j = run_result_json(row.result);
   j["solver"] = row.solver;
-  j["dir"] = row.solver;
+  j["run"] = row.name;
+  j["dir"] = row.name;
   if (!row.unstable()) j["failure"] = nullptr;
   j["failure_time_s"] = row.unstable() ? number(row.result.simulated_time) : nullptr;
   return j;

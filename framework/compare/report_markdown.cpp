@@ -36,7 +36,7 @@ std::string report_markdown(const Comparison& c, const std::vector<PlotSpec>& pl
   if (c.any_unstable()) {
     md += "\n## Failures\n\n";
     for (const auto& row : c.rows)
-      if (row.unstable()) md += "- **" + row.solver + "**: " + row.result.failure + "\n";
+      if (row.unstable()) md += "- **" + row.name + "**: " + row.result.failure + "\n";
   }
 
   md += "\n## Plots\n\n" + plots_sentence(drawn) + "\n";

@@ -38,7 +38,7 @@ ReportTable make_report_table(const Comparison& c) {
   for (std::size_t i = 0; i < c.probes.size(); ++i) t.header.push_back(c.probe_label(i));
   for (const auto& row : c.rows) {
     const RunResult& r = row.result;
-    std::vector<std::string> cells = {row.solver,
+    std::vector<std::string> cells = {row.name,
                                       status_text(row),
                                       std::to_string(r.steps),
                                       format_number(r.mean_dt),

@@ -253,3 +253,44 @@ TEST_F(Compare, SplitComparisonsRefuseBadTasksAndMixedOptions) {
 }
 
 }  // namespace
+
+namespace {
+
+// A parameter sweep: --vary runs the solver at each value, one named row and directory each; a
+// tighter eta gives a smaller compression, and more steps (PCISPH's resting-compression limit
+// shortens them). Split over tasks it gives the same rows.
+TEST_F(Compare, VaryRunsASweepWithANamedRowPerValue) {
+  const std::string scene = small_scene(0.05);
+  const std::string sweep =
+      " --solvers pcisph --vary /materials/water/solver/eta=0.01,0.001 --no-frames -q";
+  const Result r = run_upf("compare " + scene + sweep + " --threads 1 --out " + out().string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto report = read_json(out() / "report.json");
+  ASSERT_EQ(report["rows"].size(), 2u);
+  EXPECT_EQ(report["rows"][0]["run"], "pcisph,eta=0.01");
+  EXPECT_EQ(report["rows"][1]["run"], "pcisph,eta=0.001");
+  EXPECT_EQ(report["rows"][1]["solver"], "pcisph");
+  EXPECT_TRUE(fs::exists(out() / "pcisph,eta=0.001" / "summary.json"));
+  EXPECT_GT(report["rows"][1]["steps"].get<int>(), report["rows"][0]["steps"].get<int>());
+  EXPECT_LT(report["rows"][1]["mean_avg_density_error"].get<double>(),
+            report["rows"][0]["mean_avg_density_error"].get<double>());
+  EXPECT_NE(read_text(out() / "report.md").find("| pcisph,eta=0.001 | completed |"),
+            std::string::npos);
+
+  const fs::path split = dir_ / "split";
+  const Result plan =
+      run_upf("compare " + scene + sweep + " --threads 1 --plan --out " + split.string());
+  ASSERT_EQ(plan.code, 0) << plan.output;
+  EXPECT_NE(plan.output.find("0 pcisph,eta=0.01 1 pcisph,eta=0.001"), std::string::npos)
+      << plan.output;
+  for (const char* k : {"1", "0"})
+    ASSERT_EQ(run_upf("compare -q --task " + std::string(k) + " --out " + split.string()).code, 0);
+  ASSERT_EQ(run_upf("compare --collect --out " + split.string()).code, 0);
+  EXPECT_EQ(without_timings(report), without_timings(read_json(split / "report.json")));
+
+  const Result bad = run_upf("compare " + scene + " --vary /time/end --out " + out().string());
+  EXPECT_EQ(bad.code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--vary /time/end"), std::string::npos) << bad.output;
+}
+
+}  // namespace
