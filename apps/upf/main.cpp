@@ -21,6 +21,7 @@
 #include "framework/core/errors.h"
 #include "help_format.h"
 #include "info_command.h"
+#include "mpi_launch.h"
 #include "render_command.h"
 #include "viewer/viewer.h"
 
@@ -213,6 +214,12 @@ Examples:
   }
 
   try {
+    // Started by mpirun as several ranks: refused before anything is written; rank 0 says why.
+    if (*run || *compare || *render) {
+      const upf::app::LaunchedRanks ranks = upf::app::launched_ranks();
+      if (ranks.size > 1 && ranks.rank != 0) return static_cast<int>(upf::ExitCode::BadInput);
+      upf::app::refuse_several_ranks(ranks);
+    }
     if (*run) {
       if (run_args.scene.empty() && run_args.resume.empty())
         throw upf::InputError("upf run", "give a scene file, or --resume DIR");
