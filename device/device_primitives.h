@@ -165,6 +165,8 @@ struct DeviceExecutor {
   double fixed_point_sum(ParticleRange range, const Value& value, int fraction_bits = 32) const {
     return device::fixed_point_sum<Backend>(range, value, fraction_bits);
   }
+  // One device holds every particle (CpuExecutor::total).
+  std::size_t total(std::size_t local) const { return local; }
 };
 
 }  // namespace upf::device

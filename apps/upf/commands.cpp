@@ -28,6 +28,9 @@
 #include "interrupt_signal.h"
 #include "output_estimate_report.h"
 #include "progress.h"
+#ifdef UPF_HAS_MPI
+#include "mpi_run.h"
+#endif
 
 namespace upf::app {
 
@@ -106,12 +109,17 @@ int run_command(const RunArgs& args) {
     options.make_device = [device, device_where](const World& world) {
       return make_device_pipeline(device, world, device_where);
     };
+#ifdef UPF_HAS_MPI
+  if (args.split_over_ranks) options.make_domain = mpi_domain_maker(args.rebalance_every);
+#endif
+  // Ranks other than 0 run silently: rank 0 reports for all of them.
+  const bool quiet = args.quiet || args.rank != 0;
   InterruptSignal interrupt;
   options.stop_requested = [&] { return interrupt.requested(); };
   ProgressReporter progress(stderr);
-  if (!args.quiet) options.on_progress = [&](const RunProgress& p) { progress.update(p); };
+  if (!quiet) options.on_progress = [&](const RunProgress& p) { progress.update(p); };
   options.on_output_estimate = [&](const OutputEstimate& e) {
-    report_output_estimate(e, scene, args.quiet, stderr);
+    report_output_estimate(e, scene, quiet, stderr);
   };
   RunResult r;
   try {
@@ -122,6 +130,8 @@ int run_command(const RunArgs& args) {
   }
   progress.finish();
   const std::string out = options.out_dir.string();
+  if (args.rank != 0)
+    return r.status == "interrupted" ? static_cast<int>(ExitCode::Interrupted) : 0;
   if (r.already_complete) {
     std::printf(
         "%s: the run in %s is already complete at t = %.4f s (step %llu); nothing to do.\n"

@@ -23,6 +23,11 @@ struct RunArgs {
   std::optional<std::string> device;  // where the steps run; unset: the scene's "device"
   bool render = false;                // pictures of every frame once the run is done
   RenderArgs render_args;             // their look (the run directory is filled in)
+  // Split over the MPI ranks that started it (mpirun -n P, P > 1): new domain cuts every
+  // rebalance_every steps. Only rank 0 reports.
+  bool split_over_ranks = false;
+  int rank = 0;
+  int rebalance_every = 10;
 };
 
 struct CompareArgs {

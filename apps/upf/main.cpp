@@ -15,6 +15,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "app_registry.h"
 #include "commands.h"
@@ -22,6 +24,9 @@
 #include "help_format.h"
 #include "info_command.h"
 #include "mpi_launch.h"
+#ifdef UPF_HAS_MPI
+#include "mpi_run.h"
+#endif
 #include "render_command.h"
 #include "viewer/viewer.h"
 
@@ -59,6 +64,7 @@ Examples:
   upf run samples/dam_break.json --checkpoint-every 5m      then: upf run --resume out/dam_break
   upf run samples/dam_break.json --render --color-by pressure
   upf run samples/dam_break.json --device cuda       on a GPU (omp: the same pipeline on the CPU)
+  mpirun -n 4 upf run samples/dam_break.json         split over 4 MPI ranks (docs/mpi.md)
 
 A new run into a directory that holds an earlier run replaces that run's files.
 Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame written),
@@ -92,6 +98,10 @@ Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame wri
                   "where the steps run (default: the scene's \"device\", else cpu): cpu, omp (the "
                   "GPU pipeline on the CPU's threads, bitwise the same results) or cuda; PCISPH, "
                   "IISPH, DFSPH, WCSPH or SPH with walls and bodies so far (no grains)");
+  run->add_option("--rebalance-every", run_args.rebalance_every,
+                  "started by mpirun -n P: new domain cuts every N steps (docs/mpi.md); results "
+                  "do not depend on it")
+      ->check(CLI::Range(0, 1000000));
   run->add_flag("--render", run_args.render,
                 "draw a PNG of every frame (and an MP4 with ffmpeg) into OUT/render when done");
   add_render_options(*run, run_args.render_args);
@@ -213,12 +223,40 @@ Examples:
     return code == 0 ? 0 : static_cast<int>(ExitCode::BadInput);
   }
 
+  // Started by mpirun as several ranks: `upf run` splits the scene over them (with UPF_MPI);
+  // anything else is refused before anything is written, and rank 0 says why.
+  const upf::app::LaunchedRanks ranks = upf::app::launched_ranks();
+#ifdef UPF_HAS_MPI
+  std::optional<upf::app::MpiSession> mpi;
+  if (*run && ranks.size > 1) {
+    mpi.emplace(&argc, &argv);
+    run_args.split_over_ranks = true;
+    run_args.rank = mpi->rank();
+  }
+  // An error on one rank would leave the others waiting in their next exchange: on an error every
+  // rank ends the job (MPI_Abort) with its exit code. Rank 0 reports the errors every rank meets
+  // alike (bad input, an instability, which the ranks detect together); any other error is
+  // reported by the rank that met it.
+  auto fail = [&](int code, const std::string& message, bool collective) {
+    if (!mpi) {
+      std::cerr << message;
+      return code;
+    }
+    if (mpi->rank() == 0 || !collective) std::cerr << message;
+    std::cerr.flush();
+    mpi->abort(code);
+  };
+#else
+  auto fail = [](int code, const std::string& message, bool) {
+    std::cerr << message;
+    return code;
+  };
+#endif
+
   try {
-    // Started by mpirun as several ranks: refused before anything is written; rank 0 says why.
-    if (*run || *compare || *render) {
-      const upf::app::LaunchedRanks ranks = upf::app::launched_ranks();
+    if (*compare || *render || (*run && !run_args.split_over_ranks)) {
       if (ranks.size > 1 && ranks.rank != 0) return static_cast<int>(upf::ExitCode::BadInput);
-      upf::app::refuse_several_ranks(ranks);
+      upf::app::refuse_several_ranks(ranks, *run ? "run" : *compare ? "compare" : "render");
     }
     if (*run) {
       if (run_args.scene.empty() && run_args.resume.empty())
@@ -234,14 +272,16 @@ Examples:
     if (*validate) return upf::app::validate_command(validate_files, validate_sets);
     if (*info) return upf::app::info_command(info_markdown);
   } catch (const upf::InputError& e) {
-    std::cerr << "error: invalid input\n" << e.what() << '\n';
-    return static_cast<int>(ExitCode::BadInput);
+    return fail(static_cast<int>(ExitCode::BadInput),
+                std::string("error: invalid input\n") + e.what() + '\n', true);
   } catch (const upf::InstabilityError& e) {
-    std::cerr << "error: " << e.what() << "\nthe last good frame was written; see summary.json\n";
-    return static_cast<int>(ExitCode::Unstable);
+    return fail(
+        static_cast<int>(ExitCode::Unstable),
+        std::string("error: ") + e.what() + "\nthe last good frame was written; see summary.json\n",
+        true);
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return static_cast<int>(ExitCode::Failure);
+    return fail(static_cast<int>(ExitCode::Failure), std::string("error: ") + e.what() + '\n',
+                false);
   }
   return 0;
 }

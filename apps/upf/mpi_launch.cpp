@@ -29,16 +29,25 @@ LaunchedRanks launched_ranks(const std::function<const char*(const char*)>& gete
   return {};
 }
 
-void refuse_several_ranks(const LaunchedRanks& ranks) {
+void refuse_several_ranks(const LaunchedRanks& ranks, const std::string& command) {
   if (ranks.size <= 1) return;
-  throw InputError(
-      "mpirun -n " + std::to_string(ranks.size) + " (" + ranks.variable + "=" +
-          std::to_string(ranks.size) + ")",
-      "upf runs a scene on one rank: it does not split a scene over MPI ranks yet, and " +
-          std::to_string(ranks.size) +
-          " ranks would each run the whole scene into the same files. Start it as one process "
-          "(OpenMP uses the cores: --threads N); spread several runs over nodes with "
-          "upf compare --plan / --task K (docs/compare.md)");
+  const std::string where = "mpirun -n " + std::to_string(ranks.size) + " (" + ranks.variable +
+                            "=" + std::to_string(ranks.size) + ")";
+  const std::string each =
+      std::to_string(ranks.size) + " ranks would each do the whole job into the same files. ";
+  if (command == "run")
+    throw InputError(where,
+                     "this upf was built without MPI (the CMake option UPF_MPI, which "
+                     "needs libopenmpi-dev and libtrilinos-zoltan-dev), so " +
+                         each +
+                         "Rebuild with them, or start it as one process (OpenMP uses the "
+                         "cores: --threads N)");
+  if (command == "compare")
+    throw InputError(where, "upf compare runs on one rank: " + each +
+                                "Spread a comparison's runs over nodes with upf compare --plan / "
+                                "--task K (docs/compare.md)");
+  throw InputError(where, "upf " + command + " runs on one rank: " + each +
+                              "Start it as one process (--threads N)");
 }
 
 }  // namespace upf::app

@@ -1,7 +1,8 @@
 // Whether an MPI launcher (mpirun, mpiexec, srun) started this process as one of several ranks,
-// read from the environment the launchers set. upf does not decompose a scene over ranks yet
-// (issue 23): each rank would run the whole scene into the same files. So a run started as more
-// than one rank refuses before it writes anything; one rank runs as it would alone.
+// read from the environment the launchers set. `upf run` splits its scene over the ranks when
+// built with MPI (UPF_MPI, mpi_run.h); every other command, and `upf run` built without MPI,
+// would have each rank do the whole job into the same files, so it refuses before it writes
+// anything. One rank runs as it would alone.
 #pragma once
 
 #include <functional>
@@ -23,8 +24,9 @@ LaunchedRanks launched_ranks(const std::function<const char*(const char*)>& gete
                                    return static_cast<const char*>(std::getenv(name));
                                  });
 
-// Throws InputError when `ranks` holds more than one: what upf can do instead. On ranks other
-// than 0 the caller should stay quiet (rank 0 says it).
-void refuse_several_ranks(const LaunchedRanks& ranks);
+// Throws InputError when `ranks` holds more than one and `command` ("run", "compare", "render")
+// does not run split over ranks here: what upf can do instead. On ranks other than 0 the caller
+// should stay quiet (rank 0 says it).
+void refuse_several_ranks(const LaunchedRanks& ranks, const std::string& command);
 
 }  // namespace upf::app

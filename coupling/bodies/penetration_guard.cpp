@@ -1,6 +1,7 @@
 #include "coupling/bodies/penetration_guard.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "framework/world/world.h"
 
@@ -35,8 +36,16 @@ const std::vector<SurfaceHit>& PenetrationGuard::apply(
                         p.body.data(), p.id.data(), local->data(), normal->data(),
                         view_of(world.neighbours(list_)), poses.data(), views.data(), layer_depth_,
                         clearance_, per_particle_.data(), hit_.data()});
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < p.owned_size(); ++i)
     if (hit_[i]) hits_.push_back(per_particle_[i]);
+  // Across ranks every rank applies every rank's hits to its copy of the bodies.
+  if (const ParticleDomain* domain = world.domain()) {
+    std::vector<std::uint8_t> mine(hits_.size() * sizeof(SurfaceHit));
+    if (!mine.empty()) std::memcpy(mine.data(), hits_.data(), mine.size());
+    const std::vector<std::uint8_t> all = domain->all_gather(mine);
+    hits_.resize(all.size() / sizeof(SurfaceHit));
+    if (!all.empty()) std::memcpy(static_cast<void*>(hits_.data()), all.data(), all.size());
+  }
   std::sort(hits_.begin(), hits_.end(),
             [](const SurfaceHit& a, const SurfaceHit& b) { return a.particle < b.particle; });
   return hits_;

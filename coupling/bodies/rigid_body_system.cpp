@@ -218,10 +218,24 @@ void RigidBodySystem::advance(World& world, double dt) {
     const Particles& p = world.particles();
     const RigidReactionWrench wrench{p.position.data(), reaction.data(), p.body.data(),
                                      origins.data()};
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < p.owned_size(); ++i) {
       const BodyId b = p.body[i];
       if (b == kNoBody || p.type[i] != ParticleType::Rigid) continue;
       sums[std::size_t(b)] = BodyWrenchPlus{}(sums[std::size_t(b)], wrench(std::uint32_t(i)));
+    }
+  }
+  // Across ranks each rank summed its own particles; integer sums over ranks are the one-rank sums
+  // exactly, so every rank steps the same Bullet world with the same forces.
+  if (const ParticleDomain* domain = world.domain()) {
+    std::vector<std::int64_t> units;
+    for (const BodyWrench& s : sums) {
+      units.insert(units.end(), std::begin(s.units), std::end(s.units));
+      units.push_back(s.broken);
+    }
+    domain->sum(units.data(), units.size());
+    for (std::size_t b = 0; b < sums.size(); ++b) {
+      std::copy_n(units.begin() + std::ptrdiff_t(7 * b), 6, sums[b].units);
+      sums[b].broken = units[7 * b + 6] != 0;
     }
   }
   std::vector<Eigen::Vector3d> force(bodies_.size()), torque(bodies_.size());

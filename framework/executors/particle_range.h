@@ -18,6 +18,8 @@ struct ParticleRange {
   }
 };
 
-inline ParticleRange all_particles(std::size_t n) { return {nullptr, n}; }
+inline ParticleRange all_particles(std::size_t n) {
+  return {nullptr, n};
+}
 
 }  // namespace upf

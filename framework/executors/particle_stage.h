@@ -27,7 +27,8 @@ concept ParticleValue = std::is_trivially_copyable_v<Value> && requires(const Va
 };
 
 template <class Predicate>
-concept ParticlePredicate = std::is_trivially_copyable_v<Predicate> && requires(const Predicate& p) {
+concept ParticlePredicate = std::is_trivially_copyable_v<Predicate> &&
+    requires(const Predicate& p) {
   { p(std::uint32_t{}) } -> std::convertible_to<bool>;
 };
 

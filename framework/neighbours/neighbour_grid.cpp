@@ -51,8 +51,17 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
     hy = std::max(hy, x[i].y);
     hz = std::max(hz, x[i].z);
   }
+  // Across ranks the origin is global (the exact minimum over ranks): cells, and with them the
+  // order of every neighbour list, are then those of one rank.
+  bool any = n > 0;
+  if (const RankCollectives* ranks = exec.collectives()) {
+    lx = Real(ranks->min(double(lx)));
+    ly = Real(ranks->min(double(ly)));
+    lz = Real(ranks->min(double(lz)));
+    any = lx != std::numeric_limits<Real>::max();
+  }
   // One empty cell below the lowest particle, so that "cell - 1" never wraps.
-  origin_ = n ? Vec3{lx - cell_size_, ly - cell_size_, lz - cell_size_} : Vec3{};
+  origin_ = any ? Vec3{lx - cell_size_, ly - cell_size_, lz - cell_size_} : Vec3{};
 
   keys_.resize(n);
   exec.for_each_index(n, [&](std::size_t i) { keys_[i] = key_of(x[i]); });

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <type_traits>
 
 namespace upf {
 
@@ -78,6 +79,18 @@ FieldHandle<Vec3> Particles::declare_vector(const std::string& name, Vec3 init, 
   return {this, &vectors_.find(name)->second};
 }
 
+FieldHandle<Real> Particles::declare_scratch_scalar(const std::string& name) {
+  FieldHandle<Real> h = declare_scalar(name);
+  scalars_.find(name)->second.scratch = true;
+  return h;
+}
+
+FieldHandle<Vec3> Particles::declare_scratch_vector(const std::string& name) {
+  FieldHandle<Vec3> h = declare_vector(name);
+  vectors_.find(name)->second.scratch = true;
+  return h;
+}
+
 namespace {
 template <class T>
 std::string declared_names(const std::map<std::string, Field<T>>& fields) {
@@ -149,6 +162,63 @@ std::size_t Particles::remove(const std::vector<std::uint8_t>& doomed) {
   return removed;
 }
 
+void Particles::truncate(std::size_t n) {
+  if (n >= size()) return;
+  const std::size_t owned = owned_size();
+  ghosts_ = n > owned ? n - owned : 0;  // the ghosts among the first n
+  for_each_builtin([n](auto& values) { values.resize(n); }, *this);
+  for (auto& [name, f] : scalars_) f.values.resize(n);
+  for (auto& [name, f] : vectors_) f.values.resize(n);
+}
+
+namespace {
+// Calls visit(values) for every array in packing order: built-in arrays, then named fields.
+template <class P, class Visit>
+void for_each_array(P& p, std::map<std::string, Field<Real>>& scalars,
+                    std::map<std::string, Field<Vec3>>& vectors, Visit&& visit) {
+  Particles::for_each_builtin(visit, p);
+  for (auto& [name, f] : scalars) visit(f.values);
+  for (auto& [name, f] : vectors) visit(f.values);
+}
+}  // namespace
+
+std::size_t Particles::packed_size() const {
+  std::size_t bytes = 0;
+  auto& self = const_cast<Particles&>(*this);
+  for_each_array(self, self.scalars_, self.vectors_, [&](auto& values) {
+    bytes += sizeof(typename std::decay_t<decltype(values)>::value_type);
+  });
+  return bytes;
+}
+
+void Particles::pack(const std::uint32_t* indices, std::size_t count,
+                     std::vector<std::uint8_t>& out) const {
+  const std::size_t start = out.size();
+  out.resize(start + count * packed_size());
+  std::uint8_t* at = out.data() + start;
+  auto& self = const_cast<Particles&>(*this);  // visited read-only
+  for_each_array(self, self.scalars_, self.vectors_, [&](auto& values) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    for (std::size_t k = 0; k < count; ++k, at += sizeof(T))
+      std::memcpy(at, &values[indices[k]], sizeof(T));
+  });
+}
+
+void Particles::append_packed(const std::uint8_t* bytes, std::size_t count) {
+  const std::size_t first = size();
+  for_each_array(*this, scalars_, vectors_, [&](auto& values) { values.resize(first + count); });
+  overwrite_packed(first, bytes, count);
+}
+
+void Particles::overwrite_packed(std::size_t first, const std::uint8_t* bytes, std::size_t count) {
+  if (count == 0) return;
+  for_each_array(*this, scalars_, vectors_, [&](auto& values) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    std::memcpy(static_cast<void*>(&values[first]), bytes, count * sizeof(T));
+    bytes += count * sizeof(T);
+  });
+}
+
 void Particles::snapshot_into(Particles& into) const {
   for_each_builtin([](const auto& from, auto& to) { to = from; }, *this, into);
   for (const auto& [name, f] : scalars_)
@@ -161,9 +231,17 @@ void Particles::snapshot_into(Particles& into) const {
 namespace {
 
 template <class T>
+std::size_t kept_count(const std::map<std::string, Field<T>>& fields) {
+  std::size_t n = 0;
+  for (const auto& [name, f] : fields) n += !f.scratch;
+  return n;
+}
+
+template <class T>
 void save_fields(StateWriter& out, const std::map<std::string, Field<T>>& fields) {
-  out.put(std::uint64_t(fields.size()));
+  out.put(std::uint64_t(kept_count(fields)));
   for (const auto& [name, f] : fields) {
+    if (f.scratch) continue;
     out.put_string(name);
     out.put(std::uint8_t(f.exported));
     out.put_vector(f.values);
@@ -173,16 +251,20 @@ void save_fields(StateWriter& out, const std::map<std::string, Field<T>>& fields
 template <class T>
 void restore_fields(StateReader& in, std::map<std::string, Field<T>>& fields, std::size_t n) {
   const auto count = in.get<std::uint64_t>();
-  in.expect(count == fields.size(), "the number of particle fields (" + std::to_string(count) +
-                                        " saved, " + std::to_string(fields.size()) + " here)");
+  const std::size_t here = kept_count(fields);
+  in.expect(count == here, "the number of particle fields (" + std::to_string(count) + " saved, " +
+                               std::to_string(here) + " here)");
   for (std::uint64_t k = 0; k < count; ++k) {
     const std::string name = in.get_string();
     auto it = fields.find(name);
-    in.expect(it != fields.end(), "particle field '" + name + "'");
+    in.expect(it != fields.end() && !it->second.scratch, "particle field '" + name + "'");
     it->second.exported = in.get<std::uint8_t>() != 0;
     in.get_vector(it->second.values);
     in.expect(it->second.values.size() == n, "the length of particle field '" + name + "'");
   }
+  // Scratch fields are not saved: zero, at the restored length.
+  for (auto& [name, f] : fields)
+    if (f.scratch) f.values.assign(n, T{});
 }
 
 }  // namespace

@@ -30,6 +30,9 @@ template <class T>
 struct Field {
   std::vector<T> values;
   bool exported = false;
+  // Rewritten every step before anything reads it (a solver's per-step arrays that neighbours
+  // read): ghosts carry it, checkpoints do not, and a device pipeline may keep its own copy.
+  bool scratch = false;
 };
 
 class Particles {
@@ -49,6 +52,25 @@ class Particles {
   std::size_t size() const { return position.size(); }
   std::size_t count(ParticleType t) const;
 
+  // Ghosts (MPI, framework/world/particle_domain.h): copies of other ranks' particles within
+  // reach of this rank's domain, held at the end of the arrays, [owned_size(), size()), for the
+  // length of a step. Solvers move only the owned ones; the domain refreshes the ghosts.
+  std::size_t owned_size() const { return size() - ghosts_; }
+  std::size_t ghost_count() const { return ghosts_; }
+  void set_ghost_count(std::size_t ghosts) { ghosts_ = ghosts; }
+  // Cuts every array to its first n particles.
+  void truncate(std::size_t n);
+
+  // Every array of the particles listed in `indices`, appended to `out` as raw bytes (the
+  // built-in arrays, then the named fields by name): how particles travel between ranks.
+  void pack(const std::uint32_t* indices, std::size_t count, std::vector<std::uint8_t>& out) const;
+  // The bytes of one packed particle.
+  std::size_t packed_size() const;
+  // Appends `count` particles packed by a Particles with the same fields.
+  void append_packed(const std::uint8_t* bytes, std::size_t count);
+  // Overwrites particles first, first + 1, ... with `count` packed ones.
+  void overwrite_packed(std::size_t first, const std::uint8_t* bytes, std::size_t count);
+
   // Appends a particle and gives it the next stable id. Returns its index.
   std::size_t add(const Vec3& x, const Vec3& v, Real m, ParticleType t, MaterialId mat,
                   BodyId b = kNoBody);
@@ -61,6 +83,9 @@ class Particles {
   // The same, as typed handles: what a solver declares in prepare() and uses in step().
   FieldHandle<Real> declare_scalar(const std::string& name, Real init = 0, bool exported = false);
   FieldHandle<Vec3> declare_vector(const std::string& name, Vec3 init = {}, bool exported = false);
+  // A per-step field (Field::scratch), zero-initialised and never exported.
+  FieldHandle<Real> declare_scratch_scalar(const std::string& name);
+  FieldHandle<Vec3> declare_scratch_vector(const std::string& name);
   // A field someone else declared, for `who` (a solver or system name, for the error).
   FieldHandle<Real> scalar(const std::string& name, const std::string& who);
   FieldHandle<Vec3> vector(const std::string& name, const std::string& who);
@@ -96,7 +121,7 @@ class Particles {
   // Largest stable id handed out so far plus one.
   ParticleId id_bound() const { return next_id_; }
 
-  // Checkpoints: every array, every field (exported or not) and the id counter. restore_state
+  // Checkpoints: every array, every field but the scratch ones, and the id counter. restore_state
   // expects the fields this world's solvers made (same names): anything else is another run.
   void save_state(StateWriter& out) const;
   void restore_state(StateReader& in);
@@ -127,6 +152,7 @@ class Particles {
   std::map<std::string, Field<Real>> scalars_;
   std::map<std::string, Field<Vec3>> vectors_;
   ParticleId next_id_ = 0;
+  std::size_t ghosts_ = 0;
   bool sealed_ = false;
   std::vector<std::uint8_t> permute_scratch_;
 };

@@ -33,20 +33,62 @@ std::vector<std::string> probe_names(const SceneDescription& scene) {
   return names;
 }
 
+// Frame n falls at n / fps: the run loop stops a step there (World::step_towards). Every rank
+// keeps the clock; only rank 0 records.
+class FrameClock {
+ public:
+  explicit FrameClock(double fps) : fps_(fps) {}
+  double next_frame_time() const { return double(next_frame_) / fps_; }
+  // A run that starts from a world already stepped (Simulation.run in Python): its first frame is
+  // the state now, the next one the first n / fps after it.
+  void start_at(double time) { next_frame_ = std::int32_t(std::floor(time * fps_ + 1e-9)) + 1; }
+  bool due(double time) const { return time >= next_frame_time() - 1e-12; }
+  void passed(double time) {
+    while (next_frame_time() <= time + 1e-12) ++next_frame_;
+  }
+  // The frames still to come up to `end`: those on the clock, and one at the end when it falls
+  // between them.
+  int frames_until(double end) const {
+    const auto last_on_clock = std::int64_t(std::floor(end * fps_ + 1e-9));
+    int frames = int(std::max<std::int64_t>(0, last_on_clock - next_frame_ + 1));
+    if (std::abs(double(last_on_clock) / fps_ - end) > 1e-12) ++frames;
+    return frames;
+  }
+  void save_state(StateWriter& out) const { out.put(next_frame_); }
+  void restore_state(StateReader& in) { next_frame_ = in.get<std::int32_t>(); }
+
+ private:
+  double fps_;
+  std::int32_t next_frame_ = 1;
+};
+
+// The metrics row of the world's last step. Through the world, not its particles: with a device
+// pipeline these are reductions on the device, and across ranks sums over every rank (so every
+// rank computes them, and rank 0 records them).
+StepMetrics step_metrics(const World& world) {
+  StepMetrics m;
+  m.step = world.step_count();
+  m.time = world.time();
+  m.kinetic_energy = world.kinetic_energy();
+  for (int t = 0; t < kParticleTypeCount; ++t)
+    m.count_by_type[t] = world.count(static_cast<ParticleType>(t));
+  return m;
+}
+
 // Everything a run records: frames on the frame clock, metrics.csv per step, probes.csv,
 // body_forces.csv and the solvers' tables (solver_tables.h) per step (or every
 // /output/probe_every steps) and per frame, and the totals
-// behind summary.json; all of it saved in and restored from checkpoints.
+// behind summary.json; all of it saved in and restored from checkpoints. It records the state it
+// is handed: the world's particles, or on a split world all ranks' particles gathered.
 class RunRecorder {
  public:
   RunRecorder(const SceneDescription& scene, const RunOptions& options, const World& world,
-              std::vector<std::string> fields, RunResult& result)
+              std::vector<std::string> fields, RunResult& result, FrameClock& clock)
       : scene_(scene),
         world_(world),
         result_(result),
+        clock_(clock),
         out_dir_(options.out_dir),
-        fps_(scene.output.fps),
-        probe_every_(scene.output.probe_every),
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
                 options.surface_mesher, options.resume),
         metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume),
@@ -72,46 +114,23 @@ class RunRecorder {
       result_.final_probes.emplace_back(scene_.probes[i].name, values[i]);
   }
 
-  // The world's last step, and its frame when the frame clock (or the end) says so.
-  void step(bool at_end) {
-    // Through the world, not its particles: with a device pipeline these are reductions on the
-    // device, and the particles come down only for frames.
-    StepMetrics m;
-    m.step = world_.step_count();
-    m.time = world_.time();
-    m.kinetic_energy = world_.kinetic_energy();
-    for (int t = 0; t < kParticleTypeCount; ++t)
-      m.count_by_type[t] = world_.count(static_cast<ParticleType>(t));
+  // The metrics row of the world's last step (step_metrics).
+  void step_row(const StepMetrics& m) {
     metrics_.add(m, world_.last_step());
     totals_.add_step(world_.last_step(), result_);
-    const double t = world_.time();
-    const bool at_frame = t >= next_frame_time() - 1e-12 || at_end;
-    // Between frames too: an impact lasts a few steps, not a few frames.
-    const bool row_due = probe_every_ > 0 && world_.step_count() % std::uint64_t(probe_every_) == 0;
-    frames_.record_step(t, world_.last_step().dt, at_frame || row_due);
-    if (at_frame) {
-      frame(world_.particles(), t);
-      while (next_frame_time() <= t + 1e-12) ++next_frame_;
-    } else if (row_due && (!scene_.probes.empty() || !tables_.empty())) {
-      sample_probes(world_.particles(), t);
-    }
+  }
+  // Whether a step with this count records probes and tables between frames.
+  bool samples_between_frames() const { return !scene_.probes.empty() || !tables_.empty(); }
+  void record_step(double time, bool with_state) {
+    frames_.record_step(time, world_.last_step().dt, with_state);
   }
 
-  // Frame n falls at n / fps: the run loop stops a step there (World::step_towards).
-  double next_frame_time() const { return double(next_frame_) / fps_; }
-  // A run that starts from a world already stepped (Simulation.run in Python): its first frame is
-  // the state now, the next one the first n / fps after it.
-  void start_at(double time) { next_frame_ = std::int32_t(std::floor(time * fps_ + 1e-9)) + 1; }
-
-  // The frames still to come up to `end`: those on the frame clock, one at the end when it falls
-  // between them, and with `first` the frame of the state now.
-  OutputEstimate estimate(double end, bool first) const {
+  // The frames still to come up to `end` of `state`, with `first` the frame of the state now.
+  OutputEstimate estimate(const Particles& state, double end, bool first) const {
     OutputEstimate e;
-    const auto last_on_clock = std::int64_t(std::floor(end * fps_ + 1e-9));
-    e.frames = int(std::max<std::int64_t>(0, last_on_clock - next_frame_ + 1)) + (first ? 1 : 0);
-    if (std::abs(double(last_on_clock) / fps_ - end) > 1e-12) ++e.frames;
-    e.bytes_per_frame = frames_.bytes_per_frame(world_.particles());
-    e.bytes_once = frames_.bytes_once(world_.particles());
+    e.frames = clock_.frames_until(end) + (first ? 1 : 0);
+    e.bytes_per_frame = frames_.bytes_per_frame(state);
+    e.bytes_once = frames_.bytes_once(state);
     e.total_bytes = e.bytes_once + std::uint64_t(e.frames) * e.bytes_per_frame;
     e.compressed = frames_.compressed();
     e.surface = scene_.output.surface;
@@ -129,8 +148,9 @@ class RunRecorder {
   }
 
   double wall_seconds_before() const { return totals_.wall_seconds_before(); }
+  // The clock comes first in the run section: ranks that record nothing read only it.
   void save_state(StateWriter& out, double wall_seconds) {
-    out.put(next_frame_);
+    clock_.save_state(out);
     frames_.save_state(out);
     metrics_.save_state(out);
     probes_.save_state(out);
@@ -138,7 +158,7 @@ class RunRecorder {
     totals_.save_state(out, result_, wall_seconds);
   }
   void restore_state(StateReader& in) {
-    next_frame_ = in.get<std::int32_t>();
+    clock_.restore_state(in);
     frames_.restore_state(in);
     metrics_.restore_state(in);
     probes_.restore_state(in);
@@ -150,10 +170,8 @@ class RunRecorder {
   const SceneDescription& scene_;
   const World& world_;
   RunResult& result_;
+  FrameClock& clock_;
   std::filesystem::path out_dir_;
-  double fps_;
-  int probe_every_;
-  std::int32_t next_frame_ = 1;
   FrameWriter frames_;
   MetricsLog metrics_;
   ProbeLog probes_;
@@ -197,41 +215,69 @@ RunResult run_simulation(const SceneDescription& scene, const Registry& registry
   auto world = build_world(scene, registry, options.threads);
   world->prepare();
   if (options.make_device) world->set_device(options.make_device(*world));
+  if (options.make_domain) world->set_domain(options.make_domain(*world));
   return run_world(*world, scene, options);
 }
 
 RunResult run_world(World& world, const SceneDescription& scene, const RunOptions& options) {
-  ensure_directory(options.out_dir);
+  // On a split world every rank runs this loop (the same steps, the same collectives); rank 0
+  // alone records, from the particles every rank sends it.
+  const ParticleDomain* domain = world.domain();
+  const bool records = !domain || domain->rank() == 0;
+  // One decision for every rank (a signal or a wall clock may differ between them).
+  auto agreed = [&](bool mine) { return domain ? domain->max(mine ? 1.0 : 0.0) > 0 : mine; };
+  Particles gathered;
+  // The state to record: this rank's particles, or on a split world every rank's on rank 0.
+  auto whole = [&](const Particles& mine) -> const Particles& {
+    if (!domain) return mine;
+    domain->gather(mine, gathered);
+    return gathered;
+  };
+
   const std::filesystem::path checkpoint_path = options.out_dir / kCheckpointFileName;
+  if (records) ensure_directory(options.out_dir);
   // Before anything is written: a misspelt field stops the run with nothing but the directory.
   std::vector<std::string> fields = check_output_fields(scene, world.particles());
-  // The checks passed: an earlier run in the same directory goes now, not before (a refused run
-  // leaves it as it was).
-  const std::size_t replaced = options.resume ? 0 : clear_earlier_run(options.out_dir);
-  if (!options.resume && !options.scene_text.empty())
-    write_file_atomically(options.out_dir / "scene.json",
-                          [&](std::ostream& out) { out << options.scene_text; });
+  std::size_t replaced = 0;
+  if (records) {
+    // The checks passed: an earlier run in the same directory goes now, not before (a refused run
+    // leaves it as it was).
+    replaced = options.resume ? 0 : clear_earlier_run(options.out_dir);
+    if (!options.resume && !options.scene_text.empty())
+      write_file_atomically(options.out_dir / "scene.json",
+                            [&](std::ostream& out) { out << options.scene_text; });
+  }
   const double end = options.end_time.value_or(scene.world.time.end);
 
   RunResult result;
   result.replaced_files = replaced;
-  result.liquid_particles = world.particles().count(ParticleType::Liquid);
-  result.total_particles = world.particles().size();
+  result.liquid_particles = world.count(ParticleType::Liquid);
+  result.total_particles = world.executor().total(world.particles().owned_size());
   result.threads = world.executor().threads();
-  RunRecorder recorder(scene, options, world, std::move(fields), result);
+  FrameClock clock(scene.output.fps);
+  std::optional<RunRecorder> recorder;
+  if (records) recorder.emplace(scene, options, world, std::move(fields), result, clock);
   if (options.resume) {
     StateReader in = read_checkpoint(checkpoint_path);
     (void)read_header(in);
     world.restore_state(in);
     in.section("run");
-    recorder.restore_state(in);
-    if (!in.at_end()) in.fail("unread bytes at the end");
+    if (recorder) {
+      recorder->restore_state(in);
+      if (!in.at_end()) in.fail("unread bytes at the end");
+    } else {
+      clock.restore_state(in);
+    }
   } else {
-    recorder.start_at(world.time());
+    clock.start_at(world.time());
   }
-  if (options.write_frames && options.on_output_estimate && world.time() < end - 1e-12)
-    options.on_output_estimate(recorder.estimate(end, !options.resume));
-  if (!options.resume) recorder.frame(world.particles(), world.time());
+  if (!options.resume) {
+    const Particles& first = whole(world.particles());
+    if (recorder && options.write_frames && options.on_output_estimate &&
+        world.time() < end - 1e-12)
+      options.on_output_estimate(recorder->estimate(first, end, true));
+    if (recorder) recorder->frame(first, world.time());
+  }
 
   if (options.resume && world.time() >= end - 1e-12) {
     // Complete already (its final checkpoint is at the end): nothing to simulate, nothing to
@@ -244,58 +290,82 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
   const double start_time = world.time();
   const std::uint64_t start_steps = world.step_count();
   Stopwatch wall;
-  auto wall_seconds = [&] { return recorder.wall_seconds_before() + wall.elapsed_ms() / 1000.0; };
-  // Writes the checkpoint, then continues from exactly what it wrote, as a resumed run would.
+  auto wall_seconds = [&] {
+    return (recorder ? recorder->wall_seconds_before() : 0.0) + wall.elapsed_ms() / 1000.0;
+  };
+  // Writes the checkpoint, then continues from exactly what it wrote, as a resumed run would. On
+  // a split world rank 0 writes the gathered world, and every rank continues from its bytes.
   auto write_checkpoint_now = [&] {
     StateWriter out;
     out.section("header");
     out.put_string(options.checkpoint_header);
     world.save_state(out);
     out.section("run");
-    recorder.save_state(out, wall_seconds());
-    write_checkpoint(checkpoint_path, out.bytes());
+    if (recorder) {
+      recorder->save_state(out, wall_seconds());
+      write_checkpoint(checkpoint_path, out.bytes());
+    }
     ++result.checkpoints;
     result.checkpoint_file = checkpoint_path;
-    StateReader again(out.bytes(), checkpoint_path.string());
+    std::vector<char> bytes = out.bytes();
+    if (domain) domain->broadcast(bytes);
+    StateReader again(std::move(bytes), checkpoint_path.string());
     (void)read_header(again);
     world.restore_state(again);
   };
   CheckpointSchedule checkpoints(options.checkpoint, world.time());
+  const int probe_every = scene.output.probe_every;
 
   try {
     while (world.time() < end - 1e-12) {
       // Steps land on every frame time, split evenly between frames (never a sliver of a step):
       // the steps up to any time are the same whatever `end` is, so a preview's frames are the
       // first frames of the full shot, and `--resume --end` extends a run bit for bit.
-      world.step_towards(std::min(end, recorder.next_frame_time()));
+      world.step_towards(std::min(end, clock.next_frame_time()));
       const bool at_end = world.time() >= end - 1e-12;
-      recorder.step(at_end);
+      const StepMetrics metrics = step_metrics(world);
+      if (recorder) recorder->step_row(metrics);
+      const double t = world.time();
+      const bool at_frame = clock.due(t) || at_end;
+      // Between frames too: an impact lasts a few steps, not a few frames.
+      const bool row_due = probe_every > 0 && world.step_count() % std::uint64_t(probe_every) == 0;
+      if (recorder) recorder->record_step(t, at_frame || row_due);
+      if (at_frame) {
+        const Particles& state = whole(world.particles());
+        if (recorder) recorder->frame(state, t);
+        clock.passed(t);
+      } else if (row_due && agreed(recorder && recorder->samples_between_frames())) {
+        const Particles& state = whole(world.particles());
+        if (recorder) recorder->sample_probes(state, t);
+      }
       if (options.on_step) options.on_step(world);
-      if (options.on_progress)
+      if (options.on_progress && records)
         options.on_progress({world.time(), end, world.step_count(), start_time,
                              world.step_count() - start_steps, wall.elapsed_ms() / 1000.0});
       if (at_end) break;
-      if (options.stop_requested && options.stop_requested()) {
+      if (agreed(options.stop_requested && options.stop_requested())) {
         write_checkpoint_now();
         result.status = "interrupted";
-        recorder.finish(wall_seconds());
+        if (recorder) recorder->finish(wall_seconds());
         return result;
       }
-      if (checkpoints.due(wall.elapsed_ms() / 1000.0, world.time())) write_checkpoint_now();
+      if (agreed(checkpoints.due(wall.elapsed_ms() / 1000.0, world.time()))) write_checkpoint_now();
     }
   } catch (const InstabilityError& e) {
-    // The state before the failed step is the last good one: keep it on disk, then report.
-    recorder.frame(world.last_good(), world.time() - world.last_step().dt);
+    // The state before the failed step is the last good one: keep it on disk, then report. Every
+    // rank is here: the stability check is global.
+    const Particles& state = whole(world.last_good());
+    if (recorder) recorder->frame(state, world.time() - world.last_step().dt);
     result.status = "unstable";
     result.failure = e.what();
-    recorder.finish(wall_seconds());
+    if (recorder) recorder->finish(wall_seconds());
     if (options.throw_on_instability) throw;
     return result;
   }
   // The final state is a checkpoint too: `upf run --resume DIR --end T` extends a finished run
   // exactly as a run planned to T from the start would have gone on.
   if (options.final_checkpoint) write_checkpoint_now();
-  recorder.finish(wall_seconds());
+  if (recorder) recorder->finish(wall_seconds());
   return result;
 }
 

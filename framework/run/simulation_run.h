@@ -15,6 +15,7 @@
 #include "framework/scene/scene.h"
 #include "framework/solver/registry.h"
 #include "framework/world/device_pipeline.h"
+#include "framework/world/particle_domain.h"
 #include "framework/world/world.h"
 
 namespace upf {
@@ -76,6 +77,10 @@ struct RunOptions {
   // prepared world (device/device_pipelines.h), before anything is written. It may throw
   // InputError (a scene the pipeline does not cover, no GPU).
   std::function<std::unique_ptr<DevicePipeline>(const World&)> make_device;
+  // Splits the prepared world over MPI ranks (framework/mpi/): every rank runs the same scene
+  // with the same options; rank 0 gathers the particles and writes every file, the others write
+  // nothing. Unset: one rank.
+  std::function<std::unique_ptr<ParticleDomain>(const World&)> make_domain;
 };
 
 struct RunResult {

@@ -58,6 +58,11 @@ class Solver {
   virtual std::vector<std::vector<double>> table_rows(const World&, const Particles&) const {
     return {};
   }
+  // Why this solver, as set up, cannot run on a world split over MPI ranks (particle_domain.h),
+  // or empty when it can; World::set_domain refuses such a scene before any step. A solver whose
+  // per-particle arrays that neighbours read are fields, and whose reductions are the
+  // executor's, can (docs/extending.md, "Determinism rules").
+  virtual std::string cannot_split() const { return {}; }
   // Checkpoints (World::save_state): what the solver keeps from one step to the next outside the
   // particle fields, which the world saves itself. Stateless solvers keep the defaults.
   virtual void save_state(StateWriter&) const {}

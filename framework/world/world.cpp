@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -151,7 +152,12 @@ void World::step(double dt) {
   Stopwatch neighbours;
   // Reordering by the grid's (cell, id) order keeps neighbours close in memory. Lists depend on
   // positions and ids only, so the results are the same bits with or without it.
-  if (settings_.reorder_every > 0 && step_count_ % std::uint64_t(settings_.reorder_every) == 0) {
+  if (domain_) {
+    // Across ranks: migration and ghosts instead (the exchange appends arrivals and ghosts in
+    // rank order; the lists do not depend on it either).
+    domain_->exchange(step_count_);
+  } else if (settings_.reorder_every > 0 &&
+             step_count_ % std::uint64_t(settings_.reorder_every) == 0) {
     grid_.build(particles_, executor_);
     particles_.permute(grid_.sorted_order());
   }
@@ -178,10 +184,30 @@ void World::step(double dt) {
   Stopwatch body_watch;
   for (auto& b : bodies_) b->advance(*this, dt);
   if (!bodies_.empty()) report_.stage_ms.emplace_back("bodies", body_watch.elapsed_ms());
+  if (domain_) domain_->drop_ghosts();
   time_ += dt;
   ++step_count_;
   report_.total_ms = total.elapsed_ms();
   check_stability();
+}
+
+void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
+  if (!prepared_) throw std::logic_error("World::prepare() must run before World::set_domain()");
+  if (device_ && domain)
+    throw InputError("--device",
+                     "a device pipeline runs on one rank: run it without mpirun -n, or run the "
+                     "ranks on the CPU");
+  if (domain_) throw std::logic_error("World::set_domain() may run once");
+  if (domain && domain->ranks() > 1)
+    for (const auto& s : solvers_)
+      if (const std::string why = s->cannot_split(); !why.empty())
+        throw InputError("mpirun -n " + std::to_string(domain->ranks()),
+                         "solver \"" + std::string(s->name()) + "\": " + why);
+  domain_ = std::move(domain);
+  if (!domain_) return;
+  domain_->distribute(particles_, coupling_);
+  executor_.attach(domain_.get());
+  particles_.snapshot_into(last_good_);
 }
 
 void World::set_device(std::unique_ptr<DevicePipeline> pipeline) {
@@ -203,13 +229,17 @@ void World::sync_host() const {
 
 double World::kinetic_energy() const {
   if (device_ && !device_stale_) return device_->kinetic_energy();
-  return block_sum(executor_, particles_.size(),
-                   KineticEnergyValue{particles_.mass.data(), particles_.velocity.data()});
+  const double mine =
+      block_sum(executor_, particles_.owned_size(),
+                KineticEnergyValue{particles_.mass.data(), particles_.velocity.data()});
+  return domain_ ? domain_->sum_of_doubles(mine) : mine;
 }
 
 std::size_t World::count(ParticleType type) const {
   if (device_ && !device_stale_) return device_->count(type);
-  return particles_.count(type);
+  std::size_t mine = 0;
+  for (std::size_t i = 0; i < particles_.owned_size(); ++i) mine += particles_.type[i] == type;
+  return executor_.total(mine);
 }
 
 void World::step_on_device(double dt) {
@@ -281,17 +311,37 @@ void World::check_stability() const {
       executor_.first_by_id(n, particles_.id.data(),
                             BrokenParticle{particles_.position.data(), particles_.velocity.data(),
                                            settings_.max_speed * settings_.max_speed});
-  if (bad == n) return;
-  const Vec3& x = particles_.position[bad];
-  const Vec3& v = particles_.velocity[bad];
-  if (!is_finite(x))
-    throw InstabilityError(step_count_, time_, particles_.id[bad], "position (not finite)",
-                           double(x.x + x.y + x.z), 0);
-  if (!is_finite(v))
-    throw InstabilityError(step_count_, time_, particles_.id[bad], "velocity (not finite)",
-                           double(v.x + v.y + v.z), 0);
-  throw InstabilityError(step_count_, time_, particles_.id[bad], "speed [m/s]",
-                         std::sqrt(double(squared_norm(v))), settings_.max_speed);
+  // What went bad: 0 nothing, 1 the position, 2 the velocity, 3 the speed; and its value.
+  double what = 0, value = 0, id = 0;
+  if (bad != n) {
+    const Vec3& x = particles_.position[bad];
+    const Vec3& v = particles_.velocity[bad];
+    id = particles_.id[bad];
+    what = !is_finite(x) ? 1 : !is_finite(v) ? 2 : 3;
+    value = what == 1   ? double(x.x + x.y + x.z)
+            : what == 2 ? double(v.x + v.y + v.z)
+                        : std::sqrt(double(squared_norm(v)));
+  }
+  if (domain_) {
+    // The smallest bad id over every rank, as on one rank; its owner supplies what went bad and
+    // the value's bits (a sum where the others add zero: exact, NaN included).
+    const double none = std::numeric_limits<double>::max();
+    const double first = domain_->min(bad != n ? id : none);
+    if (first == none) return;
+    const bool mine = bad != n && id == first;
+    std::int64_t report[2] = {mine ? std::int64_t(what) : 0, 0};
+    if (mine) std::memcpy(&report[1], &value, sizeof(value));
+    domain_->sum(report, 2);
+    what = double(report[0]);
+    std::memcpy(&value, &report[1], sizeof(value));
+    id = first;
+  } else if (bad == n) {
+    return;
+  }
+  const auto pid = ParticleId(id);
+  if (what == 1) throw InstabilityError(step_count_, time_, pid, "position (not finite)", value, 0);
+  if (what == 2) throw InstabilityError(step_count_, time_, pid, "velocity (not finite)", value, 0);
+  throw InstabilityError(step_count_, time_, pid, "speed [m/s]", value, settings_.max_speed);
 }
 
 void World::save_state(StateWriter& out) const {
@@ -301,7 +351,16 @@ void World::save_state(StateWriter& out) const {
   out.put(step_count_);
   out.put(std::uint64_t(solvers_.size()));
   out.put(std::uint64_t(bodies_.size()));
-  particles_.save_state(out);
+  if (domain_) {
+    // Every rank's particles, gathered on rank 0 in id order: the checkpoint of a split world is
+    // a one-rank checkpoint, and resumes on any number of ranks. (The other ranks' bytes are
+    // not written.)
+    Particles whole;
+    domain_->gather(particles_, whole);
+    whole.save_state(out);
+  } else {
+    particles_.save_state(out);
+  }
   for (const auto& s : solvers_) {
     out.section(s->name());
     s->save_state(out);
@@ -324,6 +383,8 @@ void World::restore_state(StateReader& in) {
     in.expect(int(particles_.type[i]) < kParticleTypeCount, "particle type");
     in.expect(particles_.material[i] < materials_.size(), "particle material");
   }
+  // A checkpoint holds the whole world: a split world takes its share again.
+  if (domain_) domain_->distribute(particles_, coupling_);
   for (const auto& s : solvers_) {
     in.section(s->name());
     s->restore_state(in);

@@ -26,6 +26,7 @@
 #include "framework/world/container_box.h"
 #include "framework/world/coupling.h"
 #include "framework/world/device_pipeline.h"
+#include "framework/world/particle_domain.h"
 #include "framework/world/step_report.h"
 #include "framework/world/world_settings.h"
 
@@ -81,13 +82,19 @@ class World {
   const DevicePipeline* device() const { return device_.get(); }
   // For body systems while the device steps: their per-particle work goes through it.
   DevicePipeline* device() { return device_.get(); }
+  // Splits the world over MPI ranks from now on (particle_domain.h): every rank has built and
+  // prepared the same scene, and keeps its share. Call after prepare() (and after restore_state
+  // when resuming); not with a device pipeline. particles() then holds this rank's particles.
+  void set_domain(std::unique_ptr<ParticleDomain> domain);
+  const ParticleDomain* domain() const { return domain_.get(); }
   // max |v|^2 over liquid particles, wherever they are (the solvers' CFL limits).
   Real max_liquid_speed_squared() const;
   // max |v|^2 over the particles of `type` whose material m has material_flags[m] != 0 (m below
   // material_count), wherever they are: a solver's time-step limit (DEM's list skin).
   Real max_speed_squared(ParticleType type, const std::uint8_t* material_flags,
                          std::size_t material_count) const;
-  // The metrics' kinetic energy (kinetic_energy.h) and particle counts, wherever the particles are.
+  // The metrics' kinetic energy (kinetic_energy.h) and particle counts, wherever the particles
+  // are (over every rank when split).
   double kinetic_energy() const;
   std::size_t count(ParticleType type) const;
 
@@ -155,6 +162,7 @@ class World {
   bool prepared_ = false;
   StepReport report_;
   std::unique_ptr<DevicePipeline> device_;
+  std::unique_ptr<ParticleDomain> domain_;
   mutable bool host_stale_ = false;  // the device's particles are newer
   bool device_stale_ = false;        // the host's particles are newer (or never uploaded)
 };

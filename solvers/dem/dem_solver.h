@@ -69,6 +69,12 @@ class DemSolver : public Solver {
   std::vector<SolverTable> tables(const World& world) const override;
   std::vector<std::vector<double>> table_rows(const World& world,
                                               const Particles& state) const override;
+  // The contact springs live in this solver, keyed by grain, and do not travel with grains that
+  // migrate between ranks yet.
+  std::string cannot_split() const override {
+    return "granular materials do not run across MPI ranks yet: run this scene on one rank "
+           "(without mpirun -n)";
+  }
   void save_state(StateWriter& out) const override;
   void restore_state(StateReader& in) override;
 

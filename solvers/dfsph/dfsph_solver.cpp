@@ -54,6 +54,12 @@ void DfsphSolver::prepare(World& world) {
   Particles& p = world.particles();
   density_stiffness_ = p.declare_scalar(kDensityStiffness);
   divergence_stiffness_ = p.declare_scalar(kDivergenceStiffness);
+  factor_ = p.declare_scratch_scalar("dfsph.factor");
+  boundary_divergence_ = p.declare_scratch_scalar("dfsph.boundary_divergence");
+  rho_adv_ = p.declare_scratch_scalar("dfsph.advected_density");
+  k_ = p.declare_scratch_scalar("dfsph.stiffness");
+  k_total_ = p.declare_scratch_scalar("dfsph.total_stiffness");
+  v_star_ = p.declare_scratch_vector("dfsph.predicted_velocity");
   reference_speed_ = free_fall_speed(world);
 }
 
@@ -76,12 +82,12 @@ DfsphArrays DfsphSolver::arrays(World& world, const FluidView& f, const Real* de
           density,
           p[density_stiffness_].data(),
           p[divergence_stiffness_].data(),
-          factor_.data(),
-          boundary_divergence_.data(),
-          rho_adv_.data(),
-          k_.data(),
-          k_total_.data(),
-          v_star_.data()};
+          p[factor_].data(),
+          p[boundary_divergence_].data(),
+          p[rho_adv_].data(),
+          p[k_].data(),
+          p[k_total_].data(),
+          p[v_star_].data()};
 }
 
 DfsphSettings DfsphSolver::settings() const {
@@ -99,22 +105,19 @@ DfsphSettings DfsphSolver::settings() const {
 void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
   Particles& p = world.particles();
   const CpuExecutor& exec = world.executor();
-  const std::size_t n = p.size();
   FluidView f;
   Real* density = nullptr;
   DfsphArrays a{};
   stats_ = SolverStats{};
   const DfsphSettings s = settings();
   auto stopping_error = [&](const CompressionValue&) {
-    return stopping_(exec, fluid_.owned, f, rho_adv_.data());
+    return stopping_(exec, fluid_.owned, f, p[rho_adv_].data());
   };
 
   run("non_pressure", [&] {
     f = fluid_.begin_step(world);
     density = p[fluid_.density_field].data();
     fluid_.shared_forces(world, f, density);
-    for (auto* v : {&factor_, &boundary_divergence_, &rho_adv_, &k_, &k_total_}) v->resize(n);
-    v_star_.resize(n);
     a = arrays(world, f, density);
     run_dfsph_non_pressure(exec, a);
   });
@@ -131,7 +134,7 @@ void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
   run("pressure", [&] { stats_ = dfsph_pressure_solve(exec, a, s, dt, stopping_error); });
 
   run("integration", [&] {
-    fluid_.add_reactions(world, f, density, TotalStiffness{k_total_.data()});
+    fluid_.add_reactions(world, f, density, TotalStiffness{p[k_total_].data()});
     run_dfsph_integration(exec, a, dt, p.velocity.data(), p.position.data(),
                           p[fluid_.pressure_field].data());
   });

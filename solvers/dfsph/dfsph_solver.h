@@ -70,6 +70,7 @@ class DfsphSolver final : public Solver {
   DfsphSettings settings() const;
   const FluidSolverState& fluid_state() const { return fluid_; }
   double stop_percentile() const { return stopping_.percentile(); }
+  std::string cannot_split() const override { return stopping_.cannot_split(); }
   // The divergence-free solver's last step: iterations and average density change per step.
   int divergence_iterations() const { return divergence_iterations_; }
   double divergence_error() const { return divergence_error_; }
@@ -82,9 +83,10 @@ class DfsphSolver final : public Solver {
   FluidSolverState fluid_;
   StoppingError stopping_;
   FieldHandle<Real> density_stiffness_, divergence_stiffness_;
-  // Per-step arrays over all particles, rewritten every step.
-  std::vector<Real> factor_, boundary_divergence_, rho_adv_, k_, k_total_;
-  std::vector<Vec3> v_star_;
+  // Per-step fields, rewritten every step: fields, not buffers of the solver's own, because
+  // neighbours read them, and ghosts on other ranks must carry them (particle_domain.h).
+  FieldHandle<Real> factor_, boundary_divergence_, rho_adv_, k_, k_total_;
+  FieldHandle<Vec3> v_star_;
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
   int divergence_iterations_ = 0;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "framework/executors/average_over.h"
 #include "framework/executors/particle_range.h"
 #include "framework/solver/solver.h"
 #include "solvers/dfsph/dfsph_kernels.h"
@@ -108,8 +109,7 @@ std::pair<int, double> dfsph_correct(const Executor& exec, const DfsphArrays& a,
   const CompressionValue compression{a.f.rest_density, a.f.material, a.rho_adv};
   auto error_now = [&] {
     if (!divergence) return double(stopping_error(compression));
-    return a.owned.size == 0 ? 0.0
-                             : exec.fixed_point_sum(a.owned, compression) / double(a.owned.size);
+    return average_over(exec, a.owned, compression);
   };
   double error = error_now();
   int iteration = 0;
@@ -132,9 +132,7 @@ SolverStats dfsph_pressure_solve(const Executor& exec, const DfsphArrays& a, con
   const CompressionValue compression{a.f.rest_density, a.f.material, a.rho_adv};
   SolverStats stats;
   stats.iterations = iterations;
-  stats.avg_density_error = s.stops_on_average || a.owned.size == 0
-                                ? error
-                                : exec.fixed_point_sum(a.owned, compression) / double(a.owned.size);
+  stats.avg_density_error = s.stops_on_average ? error : average_over(exec, a.owned, compression);
   stats.max_density_error = double(exec.max_of(a.owned, compression));
   return stats;
 }

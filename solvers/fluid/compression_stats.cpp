@@ -2,17 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
+#include "framework/executors/average_over.h"
 #include "solvers/fluid/fluid_stages.h"
 
 namespace upf {
 
 double average_compression(const CpuExecutor& exec, const OwnedParticles& owned, const FluidView& f,
                            const Real* density) {
-  if (owned.empty()) return 0.0;
-  const double sum =
-      exec.fixed_point_sum(owned.range(), CompressionValue{f.rest_density, f.material, density});
-  return sum / double(owned.size());
+  return average_over(exec, owned.range(), CompressionValue{f.rest_density, f.material, density});
 }
 
 double max_compression(const CpuExecutor& exec, const OwnedParticles& owned, const FluidView& f,
@@ -46,6 +45,14 @@ double StoppingError::operator()(const CpuExecutor& exec, const OwnedParticles& 
   std::nth_element(compressions_.begin(), compressions_.begin() + std::ptrdiff_t(rank),
                    compressions_.end());
   return double(compressions_[rank]);
+}
+
+std::string StoppingError::cannot_split() const {
+  // A selection over every rank's particles would gather them all: not offered across ranks.
+  if (percentile_ <= 0 || percentile_ >= 100) return {};
+  return "stop_percentile " + std::to_string(percentile_) +
+         " needs every particle's compression in one place; across MPI ranks use 0 (the "
+         "average) or 100 (the largest)";
 }
 
 ParamSpec wall_pressure_spec() {

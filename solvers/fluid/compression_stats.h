@@ -6,6 +6,7 @@
 // Expansion (e_i < 0, at the free surface) counts as no error.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "framework/executors/cpu/cpu_executor.h"
@@ -31,6 +32,8 @@ class StoppingError {
  public:
   explicit StoppingError(double percentile = 0) : percentile_(percentile) {}
   bool is_average() const { return percentile_ <= 0; }
+  // Why it cannot run on a world split over ranks (Solver::cannot_split), or empty.
+  std::string cannot_split() const;
   double percentile() const { return percentile_; }
   double operator()(const CpuExecutor& exec, const OwnedParticles& owned, const FluidView& f,
                     const Real* density);

@@ -11,6 +11,7 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   Particles& p = world.particles();
   density_field = p.declare_scalar("density", 0, true);
   pressure_field = p.declare_scalar("pressure", 0, true);
+  pressure_acceleration_field = p.declare_scratch_vector("fluid.pressure_acceleration");
   lists.request(world);
   // Reactions are gathered from the rigid side: for each rigid particle, its liquid neighbours.
   if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)
@@ -21,13 +22,13 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   for (MaterialId m : materials) max_viscosity = std::max(max_viscosity, table.viscosity[m]);
 }
 
-FluidView FluidSolverState::begin_step(const World& world) {
+FluidView FluidSolverState::begin_step(World& world) {
   const std::size_t n = world.particles().size();
   owned.rebuild(world.particles());
   fluid_gradient.resize(world.neighbours(lists.fluid).total());
   boundary_gradient.resize(n);
   other_acceleration.resize(n);
-  pressure_acceleration.resize(n);
+  pressure_acceleration = world.particles()[pressure_acceleration_field].data();
   FluidView f = make_fluid_view(world, table, lists);
   f.wall_pressure = wall_pressure;
   return f;
@@ -61,8 +62,8 @@ void FluidSolverState::predict_unowned(const World& world, const FluidView& f, V
 void FluidSolverState::integrate(World& world, Real dt) const {
   Particles& p = world.particles();
   world.executor().run(owned.range(),
-                       SymplecticEulerStage{other_acceleration.data(), pressure_acceleration.data(),
-                                            dt, p.velocity.data(), p.position.data()});
+                       SymplecticEulerStage{other_acceleration.data(), pressure_acceleration, dt,
+                                            p.velocity.data(), p.position.data()});
 }
 
 }  // namespace upf

@@ -38,16 +38,19 @@ struct FluidSolverState {
   FieldHandle<Real> density_field, pressure_field;  // the exported fields every fluid solver writes
 
   // Per-step buffers, rewritten every step (so they need no reordering with the particles).
-  std::vector<Vec3> fluid_gradient;         // grad W_ij per fluid-list slot
-  std::vector<Vec3> boundary_gradient;      // per particle: sum_b V_b grad W_ib
-  std::vector<Vec3> other_acceleration;     // per particle: gravity + shared viscosity
-  std::vector<Vec3> pressure_acceleration;  // per particle: the solver's pressure term
+  std::vector<Vec3> fluid_gradient;      // grad W_ij per fluid-list slot
+  std::vector<Vec3> boundary_gradient;   // per particle: sum_b V_b grad W_ib
+  std::vector<Vec3> other_acceleration;  // per particle: gravity + shared viscosity
+  // Per particle: the solver's pressure term. A field, because neighbours read it (IISPH), and
+  // ghosts on other ranks must carry it (particle_domain.h); begin_step points at its values.
+  FieldHandle<Vec3> pressure_acceleration_field;
+  Vec3* pressure_acceleration = nullptr;
 
   // Creates the exported fields `density` and `pressure`, requests the neighbour lists and loads
   // the constants of `materials`.
   void prepare(World& world, const std::vector<MaterialId>& materials);
   // Rebuilds the owned list, sizes the buffers for this step's lists; the current state's view.
-  FluidView begin_step(const World& world);
+  FluidView begin_step(World& world);
   // The density field of the owned particles at the current positions, nothing else: the initial
   // state's (Solver::initialize_fields), which frame 0 shows.
   void initial_density(World& world);

@@ -10,7 +10,8 @@ void OwnedParticles::set_materials(std::size_t material_count,
 
 void OwnedParticles::rebuild(const Particles& particles) {
   indices_.clear();
-  for (std::size_t i = 0; i < particles.size(); ++i)
+  // Ghosts (other ranks' particles) are moved by their owners.
+  for (std::size_t i = 0; i < particles.owned_size(); ++i)
     if (owns_[particles.material[i]]) indices_.push_back(std::uint32_t(i));
 }
 

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "framework/executors/average_over.h"
 #include "framework/executors/particle_range.h"
 #include "framework/solver/solver.h"
 #include "solvers/fluid/density_rate.h"
@@ -96,9 +97,7 @@ SolverStats iisph_pressure_solve(const Executor& exec, const IisphArrays& a, con
                                                    a.density, a.pressure, a.pressure_acceleration});
   SolverStats stats;
   stats.iterations = iteration;
-  stats.avg_density_error = s.stops_on_average || a.owned.size == 0
-                                ? error
-                                : exec.fixed_point_sum(a.owned, compression) / double(a.owned.size);
+  stats.avg_density_error = s.stops_on_average ? error : average_over(exec, a.owned, compression);
   stats.max_density_error = double(exec.max_of(a.owned, compression));
   return stats;
 }

@@ -36,6 +36,13 @@ IisphSolver::IisphSolver(const IisphParams& params, std::vector<MaterialId> mate
 
 void IisphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
+  Particles& p = world.particles();
+  inverse_diagonal_ = p.declare_scratch_scalar("iisph.inverse_diagonal");
+  boundary_divergence_ = p.declare_scratch_scalar("iisph.boundary_divergence");
+  rho_adv_ = p.declare_scratch_scalar("iisph.advected_density");
+  predicted_ = p.declare_scratch_scalar("iisph.predicted_density");
+  next_ = p.declare_scratch_scalar("iisph.next_pressure");
+  v_adv_ = p.declare_scratch_vector("iisph.advected_velocity");
   reference_speed_ = free_fall_speed(world);
 }
 
@@ -62,12 +69,6 @@ void IisphSolver::step(World& world, Real dt, StageRunner& run) {
     density = p[fluid_.density_field].data();
     pressure = p[fluid_.pressure_field].data();
     fluid_.shared_forces(world, f, density);
-    inverse_diagonal_.resize(n);
-    boundary_divergence_.resize(n);
-    rho_adv_.resize(n);
-    predicted_.resize(n);
-    next_.resize(n);
-    v_adv_.resize(n);
     arrays = {f,
               fluid_.owned.range(),
               n,
@@ -75,20 +76,20 @@ void IisphSolver::step(World& world, Real dt, StageRunner& run) {
               fluid_.boundary_gradient.data(),
               fluid_.other_acceleration.data(),
               density,
-              fluid_.pressure_acceleration.data(),
+              fluid_.pressure_acceleration,
               pressure,
-              inverse_diagonal_.data(),
-              boundary_divergence_.data(),
-              rho_adv_.data(),
-              predicted_.data(),
-              next_.data(),
-              v_adv_.data()};
+              p[inverse_diagonal_].data(),
+              p[boundary_divergence_].data(),
+              p[rho_adv_].data(),
+              p[predicted_].data(),
+              p[next_].data(),
+              p[v_adv_].data()};
     run_iisph_non_pressure(exec, arrays);
   });
 
   run("pressure", [&] {
     stats_ = iisph_pressure_solve(exec, arrays, settings(), dt, [&](const CompressionValue&) {
-      return stopping_(exec, fluid_.owned, f, predicted_.data());
+      return stopping_(exec, fluid_.owned, f, p[predicted_].data());
     });
   });
 

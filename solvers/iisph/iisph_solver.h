@@ -53,6 +53,7 @@ class IisphSolver final : public Solver {
             stopping_.is_average()};
   }
   double stop_percentile() const { return stopping_.percentile(); }
+  std::string cannot_split() const override { return stopping_.cannot_split(); }
   const FluidSolverState& fluid_state() const { return fluid_; }
 
   static ParamBinding<IisphParams> param_binding();
@@ -62,9 +63,10 @@ class IisphSolver final : public Solver {
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;
   StoppingError stopping_;
-  // Per-step arrays over all particles, rewritten every step.
-  std::vector<Real> inverse_diagonal_, boundary_divergence_, rho_adv_, predicted_, next_;
-  std::vector<Vec3> v_adv_;
+  // Per-step fields, rewritten every step: fields, not buffers of the solver's own, because
+  // neighbours read them, and ghosts on other ranks must carry them (particle_domain.h).
+  FieldHandle<Real> inverse_diagonal_, boundary_divergence_, rho_adv_, predicted_, next_;
+  FieldHandle<Vec3> v_adv_;
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
 };

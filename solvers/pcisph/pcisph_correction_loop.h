@@ -4,6 +4,7 @@
 // give the same bits wherever they run. C++17: nvcc builds it too.
 #pragma once
 
+#include "framework/executors/average_over.h"
 #include "framework/executors/particle_range.h"
 #include "framework/solver/solver.h"
 #include "solvers/fluid/fluid_stages.h"
@@ -59,10 +60,7 @@ SolverStats pcisph_correction_loop(const Executor& exec, const PcisphLoopArrays&
   }
   SolverStats stats;
   stats.iterations = iteration;
-  const double count = double(a.owned.size);
-  stats.avg_density_error = s.stops_on_average || a.owned.size == 0
-                                ? error
-                                : exec.fixed_point_sum(a.owned, compression) / count;
+  stats.avg_density_error = s.stops_on_average ? error : average_over(exec, a.owned, compression);
   stats.max_density_error = double(exec.max_of(a.owned, compression));
   return stats;
 }

@@ -98,8 +98,7 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
     density = p[fluid_.density_field].data();
     pressure = p[fluid_.pressure_field].data();
     fluid_.shared_forces(world, f, density);
-    exec.run(fluid_.owned.range(),
-             ClearPressureStage{pressure, fluid_.pressure_acceleration.data()});
+    exec.run(fluid_.owned.range(), ClearPressureStage{pressure, fluid_.pressure_acceleration});
   });
 
   // Predict-correct loop. Particles this solver does not move (boundaries, bodies, other
@@ -113,7 +112,7 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
                                   fluid_.other_acceleration.data(),
                                   fluid_.fluid_gradient.data(),
                                   fluid_.boundary_gradient.data(),
-                                  fluid_.pressure_acceleration.data(),
+                                  fluid_.pressure_acceleration,
                                   x_star,
                                   rho_star,
                                   pressure};

@@ -57,6 +57,7 @@ class PcisphSolver final : public Solver {
     return {eta_, min_iterations_, max_iterations_, stopping_.is_average(), delta_scale_};
   }
   double stop_percentile() const { return stopping_.percentile(); }
+  std::string cannot_split() const override { return stopping_.cannot_split(); }
   const FluidSolverState& fluid_state() const { return fluid_; }
   static constexpr const char* kPredictedPosition = "pcisph.predicted_position";
   static constexpr const char* kPredictedDensity = "pcisph.predicted_density";

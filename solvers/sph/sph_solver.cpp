@@ -82,7 +82,7 @@ void SphSolver::compute_pressure(const World& world, const FluidView& f, const R
                                  Real* pressure) {
   run_sph_pressure(world.executor(), fluid().owned.range(), f,
                    kernel_choice(world.settings().support_radius()), stiffness_, density, pressure,
-                   fluid().pressure_acceleration.data());
+                   fluid().pressure_acceleration);
 }
 
 void SphSolver::add_reactions(World& world, const FluidView& f, const Real* density,

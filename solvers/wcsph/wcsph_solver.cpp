@@ -63,7 +63,7 @@ void WcsphSolver::compute_pressure(const World& world, const FluidView& f, const
                                    Real* pressure) {
   run_wcsph_pressure(world.executor(), fluid().owned.range(), f, density, tait_factor_.data(),
                      pressure, fluid().fluid_gradient.data(), fluid().boundary_gradient.data(),
-                     fluid().pressure_acceleration.data());
+                     fluid().pressure_acceleration);
 }
 
 }  // namespace upf

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "framework/core/state_stream.h"
 #include "framework/particles/array_sizes.h"
 #include "framework/particles/particles.h"
 
@@ -298,6 +299,76 @@ TEST(Particles, CheckArraySizesNamesTheCallerAndTheShortArray) {
   Particles short_field = p;
   short_field.scalar_field("test.s").resize(6);
   EXPECT_THROW(check_array_sizes(short_field, "w"), std::logic_error);
+}
+
+// How particles travel between MPI ranks (framework/mpi/): pack the listed ones, append them to
+// a Particles with the same fields, or overwrite ghosts with fresher copies.
+TEST(Particles, PackedParticlesArriveWithEveryArrayAndField) {
+  Particles from, to;
+  for (auto* p : {&from, &to}) {
+    p->scalar_field("s");
+    p->vector_field("v");
+  }
+  for (std::uint32_t k = 0; k < 6; ++k) add_numbered(from, k);
+  for (std::size_t i = 0; i < 6; ++i) {
+    from.scalar_field("s")[i] = Real(10 + i);
+    from.vector_field("v")[i] = Vec3{Real(i), 0, -Real(i)};
+  }
+  add_numbered(to, 100);
+  const std::uint32_t listed[] = {4, 1, 5};
+  std::vector<std::uint8_t> bytes;
+  from.pack(listed, 3, bytes);
+  EXPECT_EQ(bytes.size(), 3 * from.packed_size());
+  to.append_packed(bytes.data(), 3);
+  expect_sizes(to, 4);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::uint32_t i = listed[k];
+    EXPECT_EQ(to.id[1 + k], from.id[i]);
+    EXPECT_EQ(to.position[1 + k], from.position[i]);
+    EXPECT_EQ(to.velocity[1 + k], from.velocity[i]);
+    EXPECT_EQ(to.type[1 + k], from.type[i]);
+    EXPECT_EQ(to.body[1 + k], from.body[i]);
+    EXPECT_EQ(to.boundary_volume[1 + k], from.boundary_volume[i]);
+    EXPECT_EQ(to.scalar_field("s")[1 + k], from.scalar_field("s")[i]);
+    EXPECT_EQ(to.vector_field("v")[1 + k], from.vector_field("v")[i]);
+  }
+  // A refresh: the owner's values change, and the copies follow.
+  from.position[1] = Vec3{9, 9, 9};
+  from.scalar_field("s")[5] = 99;
+  bytes.clear();
+  from.pack(listed, 3, bytes);
+  to.set_ghost_count(3);
+  to.overwrite_packed(to.owned_size(), bytes.data(), 3);
+  EXPECT_EQ(to.position[2], (Vec3{9, 9, 9}));
+  EXPECT_EQ(to.scalar_field("s")[3], 99);
+  to.truncate(to.owned_size());
+  expect_sizes(to, 1);
+  EXPECT_EQ(to.ghost_count(), 0u);
+  EXPECT_EQ(to.id[0], 0u);
+}
+
+// Scratch fields travel with ghosts but not into checkpoints, and come back zeroed at the
+// restored length.
+TEST(Particles, ScratchFieldsAreLeftOutOfCheckpoints) {
+  Particles p;
+  const auto kept = p.declare_scalar("kept");
+  const auto scratch = p.declare_scratch_scalar("scratch");
+  for (std::uint32_t k = 0; k < 3; ++k) add_numbered(p, k);
+  p[kept][1] = 5;
+  p[scratch][1] = 7;
+  StateWriter out;
+  p.save_state(out);
+  Particles q;
+  const auto q_kept = q.declare_scalar("kept");
+  const auto q_scratch = q.declare_scratch_scalar("scratch");
+  for (std::uint32_t k = 0; k < 3; ++k) add_numbered(q, k);
+  q[q_scratch].assign(1, 3);  // a length the restore must fix
+  StateReader in(out.bytes(), "test");
+  q.restore_state(in);
+  EXPECT_EQ(q[q_kept][1], 5);
+  EXPECT_EQ(q[q_scratch], std::vector<Real>(3, 0));
+  EXPECT_TRUE(p.scalar_fields().at("scratch").scratch);
+  EXPECT_FALSE(p.scalar_fields().at("kept").scratch);
 }
 
 }  // namespace

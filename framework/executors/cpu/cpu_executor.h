@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/executors/particle_stage.h"
+#include "framework/executors/rank_collectives.h"
 
 namespace upf {
 
@@ -25,12 +26,22 @@ class CpuExecutor {
 
   int threads() const { return threads_; }
 
+  // A world split over ranks attaches its domain: reductions are then global and every stage is
+  // followed by a ghost refresh (rank_collectives.h). Null: one rank.
+  void attach(const RankCollectives* collectives) { collectives_ = collectives; }
+  const RankCollectives* collectives() const { return collectives_; }
+  // How many particles `local` counts over all ranks (an average's denominator).
+  std::size_t total(std::size_t local) const {
+    return collectives_ ? std::size_t(collectives_->sum(std::int64_t(local))) : local;
+  }
+
   // stage(i) for every i in `range`, split statically.
   template <ParticleStage Stage>
   void run(ParticleRange range, const Stage& stage) const {
     const std::int64_t count = static_cast<std::int64_t>(range.size);
 #pragma omp parallel for schedule(static) num_threads(threads_)
     for (std::int64_t k = 0; k < count; ++k) stage(range[std::size_t(k)]);
+    if (collectives_) collectives_->refresh_ghosts();
   }
 
   // Like run, but hands out small chunks dynamically: for uneven work such as per-cell
@@ -40,6 +51,7 @@ class CpuExecutor {
     const std::int64_t count = static_cast<std::int64_t>(range.size);
 #pragma omp parallel for schedule(dynamic, 64) num_threads(threads_)
     for (std::int64_t k = 0; k < count; ++k) stage(range[std::size_t(k)]);
+    if (collectives_) collectives_->refresh_ghosts();
   }
 
   // The largest value(i) over `range`, and `floor` when that is larger (or the range empty).
@@ -52,7 +64,7 @@ class CpuExecutor {
       const Real v = Real(value(range[std::size_t(k)]));
       if (v > best) best = v;
     }
-    return best;
+    return collectives_ ? Real(collectives_->max(double(best))) : best;
   }
 
   // Sum of value(i) over `range`, exact in fixed point with `fraction_bits` bits after the binary
@@ -65,8 +77,9 @@ class CpuExecutor {
     std::int64_t total = 0;
 #pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threads_)
     for (std::int64_t k = 0; k < count; ++k)
-      total += static_cast<std::int64_t>(
-          std::nearbyint(double(value(range[std::size_t(k)])) * scale));
+      total +=
+          static_cast<std::int64_t>(std::nearbyint(double(value(range[std::size_t(k)])) * scale));
+    if (collectives_) total = collectives_->sum(total);
     return double(total) / scale;
   }
 
@@ -89,6 +102,7 @@ class CpuExecutor {
   static int thread_index();  // of the calling thread inside a parallel region
 
   int threads_;
+  const RankCollectives* collectives_ = nullptr;
 };
 
 template <ParticlePredicate Predicate>

@@ -1,0 +1,300 @@
+#include "framework/mpi/mpi_domain.h"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "framework/core/errors.h"
+#include "framework/particles/particles.h"
+#include "framework/world/coupling.h"
+
+namespace upf {
+
+namespace {
+
+std::vector<int> displacements(const std::vector<int>& counts) {
+  std::vector<int> at(counts.size(), 0);
+  for (std::size_t r = 1; r < counts.size(); ++r) at[r] = at[r - 1] + counts[r - 1];
+  return at;
+}
+
+int total(const std::vector<int>& counts) {
+  return std::accumulate(counts.begin(), counts.end(), 0);
+}
+
+int byte_count(std::size_t bytes) {
+  if (bytes > std::size_t(std::numeric_limits<int>::max()))
+    throw std::runtime_error("MPI: one exchange of " + std::to_string(bytes) +
+                             " bytes exceeds what one message carries; use more ranks");
+  return int(bytes);
+}
+
+}  // namespace
+
+MpiDomain::MpiDomain(MPI_Comm comm, Real reach, int rebalance_every)
+    : comm_(comm), reach_(reach), rebalance_every_(rebalance_every) {
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &ranks_);
+  rcb_ = std::make_unique<ZoltanRcb>(comm_);
+  ghost_sends_.resize(std::size_t(ranks_));
+  ghost_receives_.assign(std::size_t(ranks_), 0);
+  send_scratch_.resize(std::size_t(ranks_));
+}
+
+void MpiDomain::sum(std::int64_t* values, std::size_t count) const {
+  MPI_Allreduce(MPI_IN_PLACE, values, int(count), MPI_INT64_T, MPI_SUM, comm_);
+}
+
+double MpiDomain::max(double local) const {
+  MPI_Allreduce(MPI_IN_PLACE, &local, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  return local;
+}
+
+double MpiDomain::min(double local) const {
+  MPI_Allreduce(MPI_IN_PLACE, &local, 1, MPI_DOUBLE, MPI_MIN, comm_);
+  return local;
+}
+
+double MpiDomain::sum_of_doubles(double local) const {
+  // Gathered and added in rank order: the same value on every rank.
+  std::vector<double> all(static_cast<std::size_t>(ranks_));
+  MPI_Allgather(&local, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, comm_);
+  return std::accumulate(all.begin(), all.end(), 0.0);
+}
+
+std::vector<std::uint8_t> MpiDomain::all_to_all(const std::vector<std::vector<std::uint8_t>>& sends,
+                                                std::vector<int>& counts) const {
+  std::vector<int> send_counts(static_cast<std::size_t>(ranks_));
+  std::vector<std::uint8_t> flat;
+  for (int r = 0; r < ranks_; ++r) {
+    send_counts[std::size_t(r)] = byte_count(sends[std::size_t(r)].size());
+    flat.insert(flat.end(), sends[std::size_t(r)].begin(), sends[std::size_t(r)].end());
+  }
+  counts.assign(std::size_t(ranks_), 0);
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
+  const std::vector<int> send_at = displacements(send_counts), receive_at = displacements(counts);
+  std::vector<std::uint8_t> received(std::size_t(total(counts)));
+  MPI_Alltoallv(flat.data(), send_counts.data(), send_at.data(), MPI_BYTE, received.data(),
+                counts.data(), receive_at.data(), MPI_BYTE, comm_);
+  return received;
+}
+
+void MpiDomain::distribute(Particles& particles, CouplingArrays& coupling) {
+  particles_ = &particles;
+  coupling_ = &coupling;
+  const std::size_t n = particles.size();
+  if (n < std::size_t(ranks_))
+    throw InputError("mpirun -n " + std::to_string(ranks_),
+                     std::to_string(ranks_) + " ranks for " + std::to_string(n) +
+                         " particles would leave ranks with empty domains: use at most " +
+                         std::to_string(n) + " ranks");
+  // Every rank holds the whole scene: each keeps every ranks-th particle, then the first
+  // exchange cuts the domains and moves them.
+  std::vector<std::uint8_t> doomed(n, 1);
+  for (std::size_t i = std::size_t(rank_); i < n; i += std::size_t(ranks_)) doomed[i] = 0;
+  particles.remove(doomed);
+  particles.set_ghost_count(0);
+  balanced_ = false;
+  migrate();
+}
+
+void MpiDomain::migrate() {
+  Particles& p = *particles_;
+  const std::size_t owned = p.owned_size();
+  if (!balanced_) {
+    rcb_->balance(p.position.data(), owned);
+    balanced_ = true;
+  }
+  std::vector<std::vector<std::uint32_t>> leaving(static_cast<std::size_t>(ranks_));
+  std::vector<std::uint8_t> doomed(owned, 0);
+  for (std::size_t i = 0; i < owned; ++i) {
+    const int to = rcb_->owner(p.position[i]);
+    if (to == rank_) continue;
+    leaving[std::size_t(to)].push_back(std::uint32_t(i));
+    doomed[i] = 1;
+  }
+  std::vector<int> counts;
+  const std::vector<std::uint8_t> arrived = send_particles(leaving, counts);
+  p.remove(doomed);
+  const std::vector<std::size_t> from = append_arrivals(arrived, counts);
+  traffic_.migrated = std::accumulate(from.begin(), from.end(), std::size_t(0));
+}
+
+std::vector<std::uint8_t> MpiDomain::send_particles(
+    const std::vector<std::vector<std::uint32_t>>& lists, std::vector<int>& counts) const {
+  for (int r = 0; r < ranks_; ++r) {
+    auto& out = send_scratch_[std::size_t(r)];
+    out.clear();
+    const auto& list = lists[std::size_t(r)];
+    particles_->pack(list.data(), list.size(), out);
+  }
+  return all_to_all(send_scratch_, counts);
+}
+
+std::vector<std::size_t> MpiDomain::append_arrivals(const std::vector<std::uint8_t>& arrived,
+                                                    const std::vector<int>& counts) {
+  const std::size_t per_particle = particles_->packed_size();
+  std::vector<std::size_t> particles(counts.size(), 0);
+  const std::uint8_t* at = arrived.data();
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    particles[r] = std::size_t(counts[r]) / per_particle;
+    particles_->append_packed(at, particles[r]);
+    at += counts[r];
+  }
+  return particles;
+}
+
+void MpiDomain::exchange(std::uint64_t step) {
+  if (rebalance_every_ > 0 && step % std::uint64_t(rebalance_every_) == 0) balanced_ = false;
+  migrate();
+  make_ghosts();
+}
+
+void MpiDomain::make_ghosts() {
+  Particles& p = *particles_;
+  const std::size_t owned = p.owned_size();
+  double lo[3], hi[3];
+  rcb_->box(rank_, lo, hi);
+  // A little beyond the support radius: a neighbour at exactly the radius must not be lost to
+  // the rounding of the box test.
+  const Real reach = reach_ * Real(1.0001);
+  std::vector<int> touching;
+  for (auto& list : ghost_sends_) list.clear();
+  for (std::size_t i = 0; i < owned; ++i) {
+    const Vec3& x = p.position[i];
+    bool inside = true;
+    for (int a = 0; a < 3; ++a)
+      inside = inside && double(x[a] - reach) > lo[a] && double(x[a] + reach) < hi[a];
+    if (inside) continue;
+    const Vec3 r{reach, reach, reach};
+    rcb_->ranks_touching(x - r, x + r, touching);
+    for (int to : touching)
+      if (to != rank_) ghost_sends_[std::size_t(to)].push_back(std::uint32_t(i));
+  }
+  std::vector<int> counts;
+  const std::vector<std::uint8_t> arrived = send_particles(ghost_sends_, counts);
+  ghost_receives_ = append_arrivals(arrived, counts);
+  const std::size_t ghosts =
+      std::accumulate(ghost_receives_.begin(), ghost_receives_.end(), std::size_t(0));
+  p.set_ghost_count(ghosts);
+  traffic_.owned = owned;
+  traffic_.ghosts = ghosts;
+  traffic_.halo_bytes = 0;
+  traffic_.halo_refreshes = 0;
+}
+
+std::size_t MpiDomain::coupling_bytes() const {
+  std::size_t bytes = 0;
+  for (int a = 0; a < kCouplingArrayCount; ++a) {
+    const auto array = CouplingArray(a);
+    if (coupling_->active(array) && (*coupling_)[array].size() == particles_->size())
+      bytes += sizeof(Vec3);
+  }
+  return bytes;
+}
+
+void MpiDomain::pack_ghosts(const std::vector<std::uint32_t>& indices,
+                            std::vector<std::uint8_t>& out) const {
+  out.clear();
+  particles_->pack(indices.data(), indices.size(), out);
+  for (int a = 0; a < kCouplingArrayCount; ++a) {
+    const auto array = CouplingArray(a);
+    const std::vector<Vec3>& values = (*coupling_)[array];
+    if (!coupling_->active(array) || values.size() != particles_->size()) continue;
+    const std::size_t start = out.size();
+    out.resize(start + indices.size() * sizeof(Vec3));
+    for (std::size_t k = 0; k < indices.size(); ++k)
+      std::memcpy(out.data() + start + k * sizeof(Vec3), &values[indices[k]], sizeof(Vec3));
+  }
+}
+
+void MpiDomain::refresh_ghosts() const {
+  if (!particles_ || ranks_ == 1) return;
+  Particles& p = *particles_;
+  for (int r = 0; r < ranks_; ++r)
+    pack_ghosts(ghost_sends_[std::size_t(r)], send_scratch_[std::size_t(r)]);
+  std::vector<int> counts;
+  const std::vector<std::uint8_t> arrived = all_to_all(send_scratch_, counts);
+  const std::size_t with_coupling = coupling_bytes();
+  const std::uint8_t* at = arrived.data();
+  std::size_t first = p.owned_size();
+  for (int r = 0; r < ranks_; ++r) {
+    const std::size_t count = ghost_receives_[std::size_t(r)];
+    p.overwrite_packed(first, at, count);
+    const std::uint8_t* values = at + count * p.packed_size();
+    for (int a = 0; a < kCouplingArrayCount && with_coupling; ++a) {
+      const auto array = CouplingArray(a);
+      std::vector<Vec3>& out = (*coupling_)[array];
+      if (!coupling_->active(array) || out.size() != p.size()) continue;
+      if (count) std::memcpy(static_cast<void*>(&out[first]), values, count * sizeof(Vec3));
+      values += count * sizeof(Vec3);
+    }
+    at += counts[std::size_t(r)];
+    first += count;
+    traffic_.halo_bytes += send_scratch_[std::size_t(r)].size();
+  }
+  ++traffic_.halo_refreshes;
+}
+
+void MpiDomain::drop_ghosts() {
+  particles_->truncate(particles_->owned_size());
+  particles_->set_ghost_count(0);
+  for (auto& list : ghost_sends_) list.clear();
+  std::fill(ghost_receives_.begin(), ghost_receives_.end(), 0);
+}
+
+void MpiDomain::gather(const Particles& owned, Particles& whole) const {
+  std::vector<std::uint32_t> all(owned.owned_size());
+  std::iota(all.begin(), all.end(), 0u);
+  std::vector<std::uint8_t> mine;
+  owned.pack(all.data(), all.size(), mine);
+  const int my_bytes = byte_count(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(ranks_), 0);
+  MPI_Gather(&my_bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
+  const std::vector<int> at = displacements(counts);
+  std::vector<std::uint8_t> received(rank_ == 0 ? std::size_t(total(counts)) : 0);
+  MPI_Gatherv(mine.data(), my_bytes, MPI_BYTE, received.data(), counts.data(), at.data(), MPI_BYTE,
+              0, comm_);
+  if (rank_ != 0) {
+    whole = Particles();
+    return;
+  }
+  whole = owned;
+  whole.truncate(owned.owned_size());
+  whole.set_ghost_count(0);
+  const std::size_t per_particle = owned.packed_size();
+  for (int r = 1; r < ranks_; ++r)
+    whole.append_packed(received.data() + at[std::size_t(r)],
+                        std::size_t(counts[std::size_t(r)]) / per_particle);
+  // In id order: the frames of any rank count list the particles alike.
+  std::vector<std::uint32_t> order(whole.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return whole.id[a] < whole.id[b]; });
+  whole.permute(order);
+}
+
+std::vector<std::uint8_t> MpiDomain::all_gather(const std::vector<std::uint8_t>& mine) const {
+  const int my_bytes = byte_count(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(ranks_), 0);
+  MPI_Allgather(&my_bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
+  const std::vector<int> at = displacements(counts);
+  std::vector<std::uint8_t> all(std::size_t(total(counts)));
+  MPI_Allgatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), counts.data(), at.data(), MPI_BYTE,
+                 comm_);
+  return all;
+}
+
+void MpiDomain::broadcast(std::vector<char>& bytes) const {
+  std::uint64_t size = bytes.size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, comm_);
+  bytes.resize(std::size_t(size));
+  // In pieces: a checkpoint may exceed what one message's int count carries.
+  constexpr std::size_t kPiece = std::size_t(1) << 30;
+  for (std::size_t at = 0; at < bytes.size(); at += kPiece)
+    MPI_Bcast(bytes.data() + at, int(std::min(kPiece, bytes.size() - at)), MPI_BYTE, 0, comm_);
+}
+
+}  // namespace upf

@@ -1,0 +1,78 @@
+// The MPI implementation of ParticleDomain (framework/world/particle_domain.h): Zoltan's
+// recursive coordinate bisection for the domains (zoltan_rcb.h), migration and ghosts by
+// all-to-all exchanges of packed particles (Particles::pack), and the collectives as
+// MPI_Allreduce over exact integer sums and exact extremes.
+//
+// Ghosts reach one support radius from each domain's faces: every neighbour list of an owned
+// particle is then complete. Every array of a ghost (built-in, named fields, the active coupling
+// arrays) is refreshed after every particle stage, so a solver needs no list of what it reads.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "framework/core/real.h"
+#include "framework/mpi/zoltan_rcb.h"
+#include "framework/world/particle_domain.h"
+
+namespace upf {
+
+class MpiDomain final : public ParticleDomain {
+ public:
+  // `reach`: how far from a domain its ghosts reach (the support radius); new cuts every
+  // `rebalance_every` steps (0: only the first).
+  MpiDomain(MPI_Comm comm, Real reach, int rebalance_every);
+
+  int rank() const override { return rank_; }
+  int ranks() const override { return ranks_; }
+  void sum(std::int64_t* values, std::size_t count) const override;
+  double max(double local) const override;
+  double min(double local) const override;
+  double sum_of_doubles(double local) const override;
+  void refresh_ghosts() const override;
+
+  void distribute(Particles& particles, CouplingArrays& coupling) override;
+  void exchange(std::uint64_t step) override;
+  void drop_ghosts() override;
+  void gather(const Particles& owned, Particles& whole) const override;
+  std::vector<std::uint8_t> all_gather(const std::vector<std::uint8_t>& mine) const override;
+  void broadcast(std::vector<char>& bytes) const override;
+  DomainTraffic traffic() const override { return traffic_; }
+
+ private:
+  // Sends sends[r] to rank r; returns everything received, in rank order, with each rank's share
+  // in `counts` (bytes).
+  std::vector<std::uint8_t> all_to_all(const std::vector<std::vector<std::uint8_t>>& sends,
+                                       std::vector<int>& counts) const;
+  // Packs lists[r]'s particles for rank r and exchanges them; the bytes received, in rank order,
+  // with each rank's share in `counts`.
+  std::vector<std::uint8_t> send_particles(const std::vector<std::vector<std::uint32_t>>& lists,
+                                           std::vector<int>& counts) const;
+  // Appends what send_particles received; the particles that came from each rank.
+  std::vector<std::size_t> append_arrivals(const std::vector<std::uint8_t>& arrived,
+                                           const std::vector<int>& counts);
+  // Owned particles whose position lies in another rank's domain move there.
+  void migrate();
+  void make_ghosts();
+  // Packs the listed particles' arrays and the active coupling arrays' values.
+  void pack_ghosts(const std::vector<std::uint32_t>& indices, std::vector<std::uint8_t>& out) const;
+  std::size_t coupling_bytes() const;
+
+  MPI_Comm comm_;
+  int rank_ = 0, ranks_ = 1;
+  Real reach_;
+  int rebalance_every_;
+  bool balanced_ = false;
+  std::unique_ptr<ZoltanRcb> rcb_;
+  Particles* particles_ = nullptr;
+  CouplingArrays* coupling_ = nullptr;
+  std::vector<std::vector<std::uint32_t>> ghost_sends_;  // per rank: owned indices it ghosts
+  std::vector<std::size_t> ghost_receives_;              // per rank: ghosts it sent here
+  mutable std::vector<std::vector<std::uint8_t>> send_scratch_;
+  mutable DomainTraffic traffic_;
+};
+
+}  // namespace upf

@@ -1,0 +1,196 @@
+// A world split over MPI ranks gives the one-rank results to the bit (DESIGN.md, "Determinism";
+// issue 23). Run by ctest as `mpirun -n P upf_mpi_tests` for P = 1, 2, 3 and 4: every rank steps
+// its share of the scene, rank 0 gathers the particles by id and steps the same scene alone, and
+// every particle's position, velocity and named fields must match in every bit. The reference is
+// the single-rank run itself: the decomposition must change nothing.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "../physics/coupling_scenes.h"
+#include "../physics/scene_helpers.h"
+#include "coupling/bodies/rigid_body_system.h"
+#include "framework/core/errors.h"
+#include "framework/mpi/mpi_domain.h"
+
+namespace upf {
+namespace {
+
+int rank_here() {
+  int r = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+int ranks_here() {
+  int n = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &n);
+  return n;
+}
+
+// Every array of every particle in id order, as bytes: positions, velocities and every field.
+struct Snapshot {
+  std::vector<std::uint32_t> ids;
+  std::vector<std::uint8_t> bytes;
+  std::size_t per_particle = 0;
+};
+
+Snapshot snapshot_of(const Particles& p) {
+  Snapshot s;
+  s.ids = p.id;
+  s.per_particle = p.packed_size();
+  std::vector<std::uint32_t> all(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) all[i] = std::uint32_t(i);
+  std::vector<std::uint32_t> order = all;
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.id[a] < p.id[b]; });
+  p.pack(order.data(), order.size(), s.bytes);
+  std::sort(s.ids.begin(), s.ids.end());
+  return s;
+}
+
+// Body states as doubles (position, velocity, spin, fluid force and torque, orientation).
+std::vector<double> body_numbers(const World& world) {
+  std::vector<double> all;
+  for (const auto& system : world.body_systems())
+    for (const NamedBodyState& b : system->body_states()) {
+      const BodyState& s = b.state;
+      for (const Eigen::Vector3d* v :
+           {&s.position, &s.velocity, &s.angular_velocity, &s.fluid_force, &s.fluid_torque})
+        all.insert(all.end(), v->data(), v->data() + 3);
+      all.insert(all.end(), s.orientation.coeffs().data(), s.orientation.coeffs().data() + 4);
+    }
+  return all;
+}
+
+struct Outcome {
+  Snapshot particles;
+  std::vector<double> bodies;
+  std::uint64_t ghosts = 0;  // summed over ranks, at the last exchange
+};
+
+// `steps` steps of `doc`, split over every rank when `split`, else on this rank alone.
+Outcome run(const nlohmann::json& doc, int steps, bool split, int rebalance_every = 10) {
+  testing::TestWorld tw(doc, 1);
+  World& world = *tw.world;
+  if (split)
+    world.set_domain(std::make_unique<MpiDomain>(MPI_COMM_WORLD, world.settings().support_radius(),
+                                                 rebalance_every));
+  std::uint64_t ghosts = 0;
+  for (int s = 0; s < steps; ++s) {
+    world.step(world.next_time_step());
+    if (split) ghosts = world.domain()->traffic().ghosts;
+  }
+  Outcome out;
+  out.bodies = body_numbers(world);
+  if (!split) {
+    out.particles = snapshot_of(world.particles());
+    return out;
+  }
+  out.ghosts = std::uint64_t(world.domain()->sum(std::int64_t(ghosts)));
+  Particles whole;
+  world.domain()->gather(world.particles(), whole);
+  if (rank_here() == 0) out.particles = snapshot_of(whole);
+  return out;
+}
+
+// On rank 0: the split run against the one-rank run, every byte of every particle.
+void expect_same_as_one_rank(const nlohmann::json& doc, int steps, int rebalance_every = 10) {
+  const Outcome split = run(doc, steps, true, rebalance_every);
+  if (rank_here() != 0) return;
+  const Outcome alone = run(doc, steps, false);
+  ASSERT_EQ(split.particles.ids, alone.particles.ids) << "the gathered particles' ids";
+  ASSERT_EQ(split.particles.per_particle, alone.particles.per_particle);
+  const auto& a = split.particles.bytes;
+  const auto& b = alone.particles.bytes;
+  ASSERT_EQ(a.size(), b.size());
+  std::size_t differing = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) differing += a[k] != b[k];
+  EXPECT_EQ(differing, 0u) << "bytes of the gathered particles that differ from one rank, out of "
+                           << a.size() << " (" << alone.particles.ids.size() << " particles)";
+  ASSERT_EQ(split.bodies.size(), alone.bodies.size());
+  EXPECT_EQ(
+      std::memcmp(split.bodies.data(), alone.bodies.data(), split.bodies.size() * sizeof(double)),
+      0)
+      << "body states differ";
+  if (ranks_here() > 1) {
+    EXPECT_GT(split.ghosts, 0u) << "a split world with no ghosts split nothing";
+  }
+  // And the scene moved: a world at rest would pass trivially.
+  const Outcome start = run(doc, 0, false);
+  EXPECT_NE(std::memcmp(start.particles.bytes.data(), alone.particles.bytes.data(),
+                        std::min(start.particles.bytes.size(), alone.particles.bytes.size())),
+            0);
+}
+
+nlohmann::json small_dam_break(const std::string& solver = "pcisph") {
+  auto doc = testing::load_sample_json("dam_break.json");
+  doc["particle_spacing"] = 0.04;
+  if (solver != "pcisph") doc["materials"]["water"]["solver"] = {{"name", solver}};
+  return doc;
+}
+
+TEST(SplitWorld, PcisphDamBreakIsBitwiseTheOneRankRun) {
+  expect_same_as_one_rank(small_dam_break(), 150);
+}
+
+TEST(SplitWorld, EveryFluidSolverIsBitwiseTheOneRankRun) {
+  for (const std::string solver : {"sph", "wcsph", "iisph", "dfsph"}) {
+    SCOPED_TRACE(solver);
+    expect_same_as_one_rank(small_dam_break(solver), 60);
+  }
+}
+
+TEST(SplitWorld, RebalancingEveryStepOrNeverChangesNoBit) {
+  expect_same_as_one_rank(small_dam_break(), 80, 1);
+  expect_same_as_one_rank(small_dam_break(), 80, 0);
+}
+
+TEST(SplitWorld, FloatingBodiesAreBitwiseTheOneRankRun) {
+  // The shipped sample, coarser, its meshes found from here.
+  auto doc = testing::load_sample_json("floating_objects.json");
+  doc["particle_spacing"] = 0.04;
+  for (auto& body : doc["bodies"]) {
+    const std::string file = body["mesh"]["file"];
+    body["mesh"]["file"] = testing::kTestMeshes + file.substr(file.rfind('/') + 1);
+  }
+  expect_same_as_one_rank(doc, 100);
+}
+
+// What the split world cannot run yet is refused before any step, on every rank alike.
+void expect_refused(const nlohmann::json& doc, const std::string& needle) {
+  try {
+    run(doc, 1, true);
+    ADD_FAILURE() << "the scene ran across ranks";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
+
+TEST(SplitWorld, GranularScenesAndPercentileStoppingTestsAreRefused) {
+  if (ranks_here() == 1) GTEST_SKIP() << "one rank runs them as usual";
+  expect_refused(testing::load_sample_json("granular_column.json"),
+                 "granular materials do not run across MPI ranks yet");
+  auto percentile = small_dam_break();
+  percentile["materials"]["water"]["solver"] = {{"name", "pcisph"}, {"stop_percentile", 50}};
+  expect_refused(percentile, "stop_percentile 50");
+}
+
+}  // namespace
+}  // namespace upf
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  // Rank 0 reports; the others' failures still fail the run through their exit code.
+  if (upf::rank_here() != 0) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  const int failed = RUN_ALL_TESTS();
+  MPI_Finalize();
+  return failed;
+}
