@@ -20,6 +20,13 @@ std::vector<int> displacements(const std::vector<int>& counts) {
   return at;
 }
 
+// Whether the ball of radius `margin` around x lies strictly inside the box [lo, hi].
+bool inside_box(const Vec3& x, Real margin, const double lo[3], const double hi[3]) {
+  for (int a = 0; a < 3; ++a)
+    if (!(double(x[a] - margin) > lo[a] && double(x[a] + margin) < hi[a])) return false;
+  return true;
+}
+
 int total(const std::vector<int>& counts) {
   return std::accumulate(counts.begin(), counts.end(), 0);
 }
@@ -109,7 +116,11 @@ void MpiDomain::migrate() {
   }
   std::vector<std::vector<std::uint32_t>> leaving(static_cast<std::size_t>(ranks_));
   std::vector<std::uint8_t> doomed(owned, 0);
+  double lo[3], hi[3];
+  rcb_->box(rank_, lo, hi);
   for (std::size_t i = 0; i < owned; ++i) {
+    // Strictly inside this rank's box: its own, without asking Zoltan (most particles).
+    if (inside_box(p.position[i], 0, lo, hi)) continue;
     const int to = rcb_->owner(p.position[i]);
     if (to == rank_) continue;
     leaving[std::size_t(to)].push_back(std::uint32_t(i));
@@ -164,10 +175,7 @@ void MpiDomain::make_ghosts() {
   for (auto& list : ghost_sends_) list.clear();
   for (std::size_t i = 0; i < owned; ++i) {
     const Vec3& x = p.position[i];
-    bool inside = true;
-    for (int a = 0; a < 3; ++a)
-      inside = inside && double(x[a] - reach) > lo[a] && double(x[a] + reach) < hi[a];
-    if (inside) continue;
+    if (inside_box(x, reach, lo, hi)) continue;  // no other domain within reach
     const Vec3 r{reach, reach, reach};
     rcb_->ranks_touching(x - r, x + r, touching);
     for (int to : touching)

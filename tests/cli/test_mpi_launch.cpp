@@ -127,9 +127,9 @@ TEST_F(MpiLaunch, MpirunWithBadInputEndsEveryRankWithCodeTwo) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-// A split run's checkpoint is a one-rank checkpoint: written at 3 ranks, resumed at 2, the run
+// A split run's checkpoint is a one-rank checkpoint: written at 4 ranks, resumed at 2, the run
 // ends with the frames of one rank's run from start to end.
-TEST_F(MpiLaunch, ACheckpointWrittenAtThreeRanksResumesAtTwo) {
+TEST_F(MpiLaunch, ACheckpointWrittenAtFourRanksResumesAtTwo) {
   nlohmann::json doc = sample();
   doc["neighbours"] = {{"reorder_every", 0}};
   const std::string scene = write(doc);
@@ -137,7 +137,7 @@ TEST_F(MpiLaunch, ACheckpointWrittenAtThreeRanksResumesAtTwo) {
   const std::string options = " --set /output/fps=50 -q";
   const Result one = run_upf("run " + scene + options + " --end 0.16 -j 1 -o " + alone.string());
   ASSERT_EQ(one.code, 0) << one.output;
-  const Result first = mpirun(3, "run " + scene + options + " --end 0.08 -o " + split.string());
+  const Result first = mpirun(4, "run " + scene + options + " --end 0.08 -o " + split.string());
   ASSERT_EQ(first.code, 0) << first.output;
   const Result rest = mpirun(2, "run --resume " + split.string() + " --end 0.16 -q");
   ASSERT_EQ(rest.code, 0) << rest.output;
