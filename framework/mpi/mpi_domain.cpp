@@ -71,21 +71,23 @@ double MpiDomain::sum_of_doubles(double local) const {
   return std::accumulate(all.begin(), all.end(), 0.0);
 }
 
-std::vector<std::uint8_t> MpiDomain::all_to_all(const std::vector<std::vector<std::uint8_t>>& sends,
-                                                std::vector<int>& counts) const {
+const std::vector<std::uint8_t>& MpiDomain::all_to_all(
+    const std::vector<std::vector<std::uint8_t>>& sends, std::vector<int>& counts) const {
+  // Scratch kept between calls: a refresh runs after every stage.
   std::vector<int> send_counts(static_cast<std::size_t>(ranks_));
-  std::vector<std::uint8_t> flat;
+  flat_scratch_.clear();
   for (int r = 0; r < ranks_; ++r) {
     send_counts[std::size_t(r)] = byte_count(sends[std::size_t(r)].size());
-    flat.insert(flat.end(), sends[std::size_t(r)].begin(), sends[std::size_t(r)].end());
+    flat_scratch_.insert(flat_scratch_.end(), sends[std::size_t(r)].begin(),
+                         sends[std::size_t(r)].end());
   }
   counts.assign(std::size_t(ranks_), 0);
   MPI_Alltoall(send_counts.data(), 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
   const std::vector<int> send_at = displacements(send_counts), receive_at = displacements(counts);
-  std::vector<std::uint8_t> received(std::size_t(total(counts)));
-  MPI_Alltoallv(flat.data(), send_counts.data(), send_at.data(), MPI_BYTE, received.data(),
-                counts.data(), receive_at.data(), MPI_BYTE, comm_);
-  return received;
+  received_scratch_.resize(std::size_t(total(counts)));
+  MPI_Alltoallv(flat_scratch_.data(), send_counts.data(), send_at.data(), MPI_BYTE,
+                received_scratch_.data(), counts.data(), receive_at.data(), MPI_BYTE, comm_);
+  return received_scratch_;
 }
 
 void MpiDomain::distribute(Particles& particles, CouplingArrays& coupling) {
@@ -127,13 +129,13 @@ void MpiDomain::migrate() {
     doomed[i] = 1;
   }
   std::vector<int> counts;
-  const std::vector<std::uint8_t> arrived = send_particles(leaving, counts);
+  const std::vector<std::uint8_t>& arrived = send_particles(leaving, counts);
   p.remove(doomed);
   const std::vector<std::size_t> from = append_arrivals(arrived, counts);
   traffic_.migrated = std::accumulate(from.begin(), from.end(), std::size_t(0));
 }
 
-std::vector<std::uint8_t> MpiDomain::send_particles(
+const std::vector<std::uint8_t>& MpiDomain::send_particles(
     const std::vector<std::vector<std::uint32_t>>& lists, std::vector<int>& counts) const {
   for (int r = 0; r < ranks_; ++r) {
     auto& out = send_scratch_[std::size_t(r)];
@@ -182,7 +184,7 @@ void MpiDomain::make_ghosts() {
       if (to != rank_) ghost_sends_[std::size_t(to)].push_back(std::uint32_t(i));
   }
   std::vector<int> counts;
-  const std::vector<std::uint8_t> arrived = send_particles(ghost_sends_, counts);
+  const std::vector<std::uint8_t>& arrived = send_particles(ghost_sends_, counts);
   ghost_receives_ = append_arrivals(arrived, counts);
   const std::size_t ghosts =
       std::accumulate(ghost_receives_.begin(), ghost_receives_.end(), std::size_t(0));
@@ -193,24 +195,23 @@ void MpiDomain::make_ghosts() {
   traffic_.halo_refreshes = 0;
 }
 
-std::size_t MpiDomain::coupling_bytes() const {
-  std::size_t bytes = 0;
+std::vector<std::vector<Vec3>*> MpiDomain::carried_coupling() const {
+  std::vector<std::vector<Vec3>*> carried;
   for (int a = 0; a < kCouplingArrayCount; ++a) {
     const auto array = CouplingArray(a);
     if (coupling_->active(array) && (*coupling_)[array].size() == particles_->size())
-      bytes += sizeof(Vec3);
+      carried.push_back(&(*coupling_)[array]);
   }
-  return bytes;
+  return carried;
 }
 
 void MpiDomain::pack_ghosts(const std::vector<std::uint32_t>& indices,
+                            const std::vector<std::vector<Vec3>*>& coupling,
                             std::vector<std::uint8_t>& out) const {
   out.clear();
   particles_->pack(indices.data(), indices.size(), out);
-  for (int a = 0; a < kCouplingArrayCount; ++a) {
-    const auto array = CouplingArray(a);
-    const std::vector<Vec3>& values = (*coupling_)[array];
-    if (!coupling_->active(array) || values.size() != particles_->size()) continue;
+  for (const std::vector<Vec3>* array : coupling) {
+    const std::vector<Vec3>& values = *array;
     const std::size_t start = out.size();
     out.resize(start + indices.size() * sizeof(Vec3));
     for (std::size_t k = 0; k < indices.size(); ++k)
@@ -221,22 +222,19 @@ void MpiDomain::pack_ghosts(const std::vector<std::uint32_t>& indices,
 void MpiDomain::refresh_ghosts() const {
   if (!particles_ || ranks_ == 1) return;
   Particles& p = *particles_;
+  const std::vector<std::vector<Vec3>*> coupling = carried_coupling();
   for (int r = 0; r < ranks_; ++r)
-    pack_ghosts(ghost_sends_[std::size_t(r)], send_scratch_[std::size_t(r)]);
+    pack_ghosts(ghost_sends_[std::size_t(r)], coupling, send_scratch_[std::size_t(r)]);
   std::vector<int> counts;
-  const std::vector<std::uint8_t> arrived = all_to_all(send_scratch_, counts);
-  const std::size_t with_coupling = coupling_bytes();
+  const std::vector<std::uint8_t>& arrived = all_to_all(send_scratch_, counts);
   const std::uint8_t* at = arrived.data();
   std::size_t first = p.owned_size();
   for (int r = 0; r < ranks_; ++r) {
     const std::size_t count = ghost_receives_[std::size_t(r)];
     p.overwrite_packed(first, at, count);
     const std::uint8_t* values = at + count * p.packed_size();
-    for (int a = 0; a < kCouplingArrayCount && with_coupling; ++a) {
-      const auto array = CouplingArray(a);
-      std::vector<Vec3>& out = (*coupling_)[array];
-      if (!coupling_->active(array) || out.size() != p.size()) continue;
-      if (count) std::memcpy(static_cast<void*>(&out[first]), values, count * sizeof(Vec3));
+    for (std::vector<Vec3>* out : coupling) {
+      if (count) std::memcpy(static_cast<void*>(&(*out)[first]), values, count * sizeof(Vec3));
       values += count * sizeof(Vec3);
     }
     at += counts[std::size_t(r)];

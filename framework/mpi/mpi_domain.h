@@ -44,22 +44,25 @@ class MpiDomain final : public ParticleDomain {
 
  private:
   // Sends sends[r] to rank r; returns everything received, in rank order, with each rank's share
-  // in `counts` (bytes).
-  std::vector<std::uint8_t> all_to_all(const std::vector<std::vector<std::uint8_t>>& sends,
-                                       std::vector<int>& counts) const;
+  // in `counts` (bytes). The bytes are valid until the next exchange.
+  const std::vector<std::uint8_t>& all_to_all(const std::vector<std::vector<std::uint8_t>>& sends,
+                                              std::vector<int>& counts) const;
   // Packs lists[r]'s particles for rank r and exchanges them; the bytes received, in rank order,
   // with each rank's share in `counts`.
-  std::vector<std::uint8_t> send_particles(const std::vector<std::vector<std::uint32_t>>& lists,
-                                           std::vector<int>& counts) const;
+  const std::vector<std::uint8_t>& send_particles(
+      const std::vector<std::vector<std::uint32_t>>& lists, std::vector<int>& counts) const;
   // Appends what send_particles received; the particles that came from each rank.
   std::vector<std::size_t> append_arrivals(const std::vector<std::uint8_t>& arrived,
                                            const std::vector<int>& counts);
   // Owned particles whose position lies in another rank's domain move there.
   void migrate();
   void make_ghosts();
-  // Packs the listed particles' arrays and the active coupling arrays' values.
-  void pack_ghosts(const std::vector<std::uint32_t>& indices, std::vector<std::uint8_t>& out) const;
-  std::size_t coupling_bytes() const;
+  // The coupling arrays ghosts carry: the active ones, sized for this step.
+  std::vector<std::vector<Vec3>*> carried_coupling() const;
+  // Packs the listed particles' arrays and their values in `coupling`.
+  void pack_ghosts(const std::vector<std::uint32_t>& indices,
+                   const std::vector<std::vector<Vec3>*>& coupling,
+                   std::vector<std::uint8_t>& out) const;
 
   MPI_Comm comm_;
   int rank_ = 0, ranks_ = 1;
@@ -72,6 +75,7 @@ class MpiDomain final : public ParticleDomain {
   std::vector<std::vector<std::uint32_t>> ghost_sends_;  // per rank: owned indices it ghosts
   std::vector<std::size_t> ghost_receives_;              // per rank: ghosts it sent here
   mutable std::vector<std::vector<std::uint8_t>> send_scratch_;
+  mutable std::vector<std::uint8_t> flat_scratch_, received_scratch_;  // all_to_all's buffers
   mutable DomainTraffic traffic_;
 };
 

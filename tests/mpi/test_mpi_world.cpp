@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -43,9 +45,8 @@ Snapshot snapshot_of(const Particles& p) {
   Snapshot s;
   s.ids = p.id;
   s.per_particle = p.packed_size();
-  std::vector<std::uint32_t> all(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) all[i] = std::uint32_t(i);
-  std::vector<std::uint32_t> order = all;
+  std::vector<std::uint32_t> order(p.size());
+  std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.id[a] < p.id[b]; });
   p.pack(order.data(), order.size(), s.bytes);
   std::sort(s.ids.begin(), s.ids.end());
