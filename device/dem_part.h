@@ -109,7 +109,8 @@ class DemPart final : public SolverPart<Backend> {
           reaction_list_ >= 0 ? state.lists.view(reaction_list_) : NeighbourView{nullptr, nullptr},
           raw<ContainerBox>(boxes_),
           std::uint32_t(boxes_.size()),
-          s.skin};
+          s.skin,
+          std::uint32_t(n)};  // one rank: no ghosts
       contacts_.rebuild(sources, owned, n, state.id_bound, raw<ParticleId>(p.id));
       if (s.liquid) interpolate_fluid(state, owned);
       a = arrays(state, owned, rigid);
@@ -172,6 +173,7 @@ class DemPart final : public SolverPart<Backend> {
     a.pairs = DemPairTable{raw<DemPairParams>(pairs_), raw<DemPairParams>(walls_),
                            raw<DemPairParams>(boundary_), s.materials, s.boundary_radius};
     a.owned = owned;
+    a.holders = owned;
     a.rigid = rigid;
     a.x = raw<Vec3>(p.position);
     a.v = raw<Vec3>(p.velocity);

@@ -128,6 +128,9 @@ void MpiDomain::migrate() {
     leaving[std::size_t(to)].push_back(std::uint32_t(i));
     doomed[i] = 1;
   }
+  departed_.assign(leaving.size(), {});
+  for (std::size_t r = 0; r < leaving.size(); ++r)
+    for (std::uint32_t i : leaving[r]) departed_[r].push_back(p.id[i]);
   std::vector<int> counts;
   const std::vector<std::uint8_t>& arrived = send_particles(leaving, counts);
   p.remove(doomed);
@@ -280,6 +283,12 @@ void MpiDomain::gather(const Particles& owned, Particles& whole) const {
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return whole.id[a] < whole.id[b]; });
   whole.permute(order);
+}
+
+std::vector<std::uint8_t> MpiDomain::exchange_bytes(
+    const std::vector<std::vector<std::uint8_t>>& sends) const {
+  std::vector<int> counts;
+  return all_to_all(sends, counts);
 }
 
 std::vector<std::uint8_t> MpiDomain::all_gather(const std::vector<std::uint8_t>& mine) const {

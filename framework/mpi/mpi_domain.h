@@ -38,6 +38,9 @@ class MpiDomain final : public ParticleDomain {
   void exchange(std::uint64_t step) override;
   void drop_ghosts() override;
   void gather(const Particles& owned, Particles& whole) const override;
+  const std::vector<std::vector<std::uint32_t>>& departed() const override { return departed_; }
+  std::vector<std::uint8_t> exchange_bytes(
+      const std::vector<std::vector<std::uint8_t>>& sends) const override;
   std::vector<std::uint8_t> all_gather(const std::vector<std::uint8_t>& mine) const override;
   void broadcast(std::vector<char>& bytes) const override;
   DomainTraffic traffic() const override { return traffic_; }
@@ -74,6 +77,7 @@ class MpiDomain final : public ParticleDomain {
   CouplingArrays* coupling_ = nullptr;
   std::vector<std::vector<std::uint32_t>> ghost_sends_;  // per rank: owned indices it ghosts
   std::vector<std::size_t> ghost_receives_;              // per rank: ghosts it sent here
+  std::vector<std::vector<std::uint32_t>> departed_;     // per rank: ids migrated there
   mutable std::vector<std::vector<std::uint8_t>> send_scratch_;
   mutable std::vector<std::uint8_t> flat_scratch_, received_scratch_;  // all_to_all's buffers
   mutable DomainTraffic traffic_;

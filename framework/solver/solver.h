@@ -14,6 +14,7 @@ namespace upf {
 
 class World;
 class Particles;
+class ParticleDomain;
 class StateWriter;
 class StateReader;
 
@@ -63,6 +64,11 @@ class Solver {
   // per-particle arrays that neighbours read are fields, and whose reductions are the
   // executor's, can (docs/extending.md, "Determinism rules").
   virtual std::string cannot_split() const { return {}; }
+  // World::set_domain hands a solver that can split the domain it now runs on, once, before any
+  // step. A solver that keeps state by particle id outside the fields (DEM's springs) sends it
+  // after the particles that migrate (ParticleDomain::departed) and gathers it for checkpoints,
+  // which hold the whole world.
+  virtual void split_over(const ParticleDomain&) {}
   // Checkpoints (World::save_state): what the solver keeps from one step to the next outside the
   // particle fields, which the world saves itself. Stateless solvers keep the defaults.
   virtual void save_state(StateWriter&) const {}

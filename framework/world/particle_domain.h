@@ -41,6 +41,13 @@ class ParticleDomain : public RankCollectives {
   virtual void drop_ghosts() = 0;
   // Rank 0 receives every rank's owned particles sorted by id; the other ranks get none.
   virtual void gather(const Particles& owned, Particles& whole) const = 0;
+  // The stable ids of the particles the last exchange moved from this rank, by destination rank:
+  // a solver that keeps state by particle id outside the particle fields (DEM's springs) sends
+  // it after them (Solver::split_over).
+  virtual const std::vector<std::vector<std::uint32_t>>& departed() const = 0;
+  // Sends sends[r] to rank r; every rank calls it. What this rank received, in rank order.
+  virtual std::vector<std::uint8_t> exchange_bytes(
+      const std::vector<std::vector<std::uint8_t>>& sends) const = 0;
   // Every rank's bytes, concatenated in rank order, on every rank.
   virtual std::vector<std::uint8_t> all_gather(const std::vector<std::uint8_t>& mine) const = 0;
   // Rank 0's bytes on every rank (a checkpoint: StateWriter::bytes).

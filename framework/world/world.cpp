@@ -207,6 +207,7 @@ void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
   if (!domain_) return;
   domain_->distribute(particles_, coupling_);
   executor_.attach(domain_.get());
+  for (auto& s : solvers_) s->split_over(*domain_);
   particles_.snapshot_into(last_good_);
 }
 

@@ -19,7 +19,8 @@ DemCandidateSources candidate_sources(const Particles& p, const OwnedParticles& 
           s.reactions ? view_of(*s.reactions) : NeighbourView{},
           s.boxes->data(),
           std::uint32_t(s.boxes->size()),
-          s.skin};
+          s.skin,
+          std::uint32_t(p.owned_size())};
 }
 
 // offsets[i + 1] += offsets[i]: counts into CSR offsets.
@@ -33,7 +34,7 @@ void DemContactList::clear() {
   *this = DemContactList{};
 }
 
-void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned,
+void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned, ParticleRange holders,
                              const Sources& sources, const CpuExecutor& exec) {
   const std::size_t n = p.size();
   // Last step's candidates become the history the new ones carry their springs from.
@@ -42,7 +43,7 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned,
   const DemCandidateSources s = candidate_sources(p, owned, sources);
 
   offsets_.assign(n + 1, 0);
-  exec.run(owned.range(), DemCountCandidatesStage{s, offsets_.data()});
+  exec.run(holders, DemCountCandidatesStage{s, offsets_.data()});
   scan_counts(offsets_);
   const std::size_t total = offsets_[n];
   partner_.resize(total);
@@ -52,24 +53,23 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned,
   partner_torque_.resize(total);
   partner_rolling_.resize(total);
   touching_.resize(total);
-  exec.run(owned.range(), DemFillCandidatesStage{s, offsets_.data(), partner_.data(), key_.data(),
-                                                 xi_.data(), touching_.data()});
-  carry_springs(p, owned, exec);
+  exec.run(holders, DemFillCandidatesStage{s, offsets_.data(), partner_.data(), key_.data(),
+                                           xi_.data(), touching_.data()});
+  carry_springs(p, holders, exec);
   build_reverse(s, n, exec);
 }
 
-void DemContactList::carry_springs(const Particles& p, const OwnedParticles& owned,
+void DemContactList::carry_springs(const Particles& p, ParticleRange holders,
                                    const CpuExecutor& exec) {
   // last_begin_by_id_ still describes last_key_ / last_xi_.
-  exec.run(owned.range(),
-           DemCarrySpringsStage{p.id.data(), offsets_.data(), key_.data(), xi_.data(),
-                                last_begin_by_id_.data(), last_count_by_id_.data(),
-                                std::uint32_t(last_count_by_id_.size()), last_key_.data(),
-                                last_xi_.data()});
+  exec.run(holders, DemCarrySpringsStage{p.id.data(), offsets_.data(), key_.data(), xi_.data(),
+                                         last_begin_by_id_.data(), last_count_by_id_.data(),
+                                         std::uint32_t(last_count_by_id_.size()), last_key_.data(),
+                                         last_xi_.data()});
   last_begin_by_id_.assign(p.id_bound(), 0);
   last_count_by_id_.assign(p.id_bound(), 0);
-  exec.run(owned.range(), DemRecordByIdStage{p.id.data(), offsets_.data(), last_begin_by_id_.data(),
-                                             last_count_by_id_.data()});
+  exec.run(holders, DemRecordByIdStage{p.id.data(), offsets_.data(), last_begin_by_id_.data(),
+                                       last_count_by_id_.data()});
 }
 
 void DemContactList::build_reverse(const DemCandidateSources& s, std::size_t n,

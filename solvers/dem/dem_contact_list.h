@@ -12,8 +12,14 @@
 // The list is rebuilt every world step from the neighbour lists. Springs carry over by the
 // stable (grain id, partner key) of their pair, so reordering the particles loses nothing.
 // Sum orders follow the neighbour lists, which depend on positions and ids only: results do not
-// depend on memory order or thread count. The building passes are the plain stages of
-// dem_contact_stages.h, so a device pipeline can build the same list.
+// depend on memory order or thread count.
+//
+// Split over MPI ranks, a pair across a domain face is computed on both ranks: a ghost grain
+// holds its pairs with the rank's own particles (dem_contact_stages.h), so every rank computes
+// what its own particles gather, in the one-rank operand order. The springs follow the particles
+// that migrate (follow_migration): whichever ranks compute a pair next step find its spring. The
+// building passes are the plain stages of dem_contact_stages.h, so a device pipeline can build the
+// same list.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +31,7 @@
 #include "framework/neighbours/neighbour_list.h"
 #include "framework/particles/particles.h"
 #include "framework/world/container_box.h"
+#include "framework/world/particle_domain.h"
 #include "solvers/dem/dem_contact_stages.h"
 #include "solvers/dem/dem_spring_state.h"
 #include "solvers/dem/dem_views.h"
@@ -44,9 +51,14 @@ class DemContactList {
 
   // Forgets every spring (a new world).
   void clear();
-  // The candidates of this world step; springs carry over from the last.
-  void rebuild(const Particles& particles, const OwnedParticles& owned, const Sources& sources,
-               const CpuExecutor& exec);
+  // The candidates of this world step, held by `holders` (the solver's grains, then its ghost
+  // grains on a split world); springs carry over from the last.
+  void rebuild(const Particles& particles, const OwnedParticles& owned, ParticleRange holders,
+               const Sources& sources, const CpuExecutor& exec);
+  // A split world just moved particles (ParticleDomain::departed): the springs of every pair
+  // that one of them is in go after it, so that the ranks computing the pair next find them.
+  // Every rank calls it, before rebuild.
+  void follow_migration(const ParticleDomain& domain);
 
   // Candidates of particle i: [begin(i), end(i)).
   std::uint32_t begin(std::size_t i) const { return offsets_[i]; }
@@ -92,14 +104,19 @@ class DemContactList {
 
   // Checkpoints: the springs and whose they are (the candidates are listed again next step).
   void save_state(StateWriter& out) const;
+  // The same for a split world, on every rank: the springs of all ranks, merged. A checkpoint
+  // holds the whole world and resumes on any rank count.
+  void save_gathered(StateWriter& out, const ParticleDomain& domain) const;
   void restore_state(StateReader& in);
   // The same state as plain vectors (`primed` is the solver's): for a device pipeline.
   void springs_into(DemSpringState& state) const;
   void set_springs(const DemSpringState& state);
 
  private:
-  void carry_springs(const Particles& particles, const OwnedParticles& owned,
-                     const CpuExecutor& exec);
+  void carry_springs(const Particles& particles, ParticleRange holders, const CpuExecutor& exec);
+  // The springs carried to the next step, as (holder id, key, spring) records, and back.
+  std::vector<DemSpringRecord> records() const;
+  void set_records(std::vector<DemSpringRecord> records);
   void build_reverse(const DemCandidateSources& sources, std::size_t n, const CpuExecutor& exec);
 
   std::vector<std::uint32_t> offsets_;  // by particle, size() + 1

@@ -35,6 +35,8 @@ struct DemCandidateSources {
   const ContainerBox* boxes;  // the containers' inner boxes
   std::uint32_t box_count;
   Real skin;  // m, how far beyond contact the candidates reach
+  // Particles from here on are ghosts (another rank's, particle_domain.h); one rank: the size.
+  std::uint32_t owned_end;
 
   // Whether grain i holds the pair with neighbour j: the grain with the lower id holds a pair of
   // the solver's grains, a grain holds every pair with another solver's grain or with a body's
@@ -45,12 +47,15 @@ struct DemCandidateSources {
   }
 
   // emit(partner, key) for each candidate of grain i: container faces first (container and face
-  // order), then the neighbours it holds, in neighbour-list order.
+  // order), then the neighbours it holds, in neighbour-list order. A ghost grain holds only its
+  // pairs with this rank's own particles: the rank computes them too, in the same operand order
+  // and with the same spring as the ghost's owner, so its particles gather the same reactions.
   template <class Emit>
   UPF_HD void for_each_candidate(std::uint32_t i, Emit& emit) const {
+    const bool ghost = i >= owned_end;
     const Vec3 xi = x[i];
     const Real reach = radius[i] + skin;
-    for (std::uint32_t b = 0; b < box_count; ++b) {
+    for (std::uint32_t b = 0; b < (ghost ? 0u : box_count); ++b) {
       const ContainerBox& box = boxes[b];
       bool near = true;
       for (int a = 0; a < 3; ++a)
@@ -65,7 +70,7 @@ struct DemCandidateSources {
     }
     for (std::uint32_t k = grains.offsets[i]; k < grains.offsets[i + 1]; ++k) {
       const std::uint32_t j = grains.indices[k];
-      if (holds(i, j)) emit(j, std::uint32_t(id[j]));
+      if (holds(i, j) && !(ghost && j >= owned_end)) emit(j, std::uint32_t(id[j]));
     }
   }
 };

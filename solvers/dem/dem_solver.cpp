@@ -65,6 +65,8 @@ void DemSolver::prepare(World& world) {
     reaction_list_ =
         world.request_neighbours(mask_of(ParticleType::Rigid), kGranularMask, list_radius);
   if (p.count(ParticleType::Liquid) > 0) {
+    fluid_weight_sum_ = p.declare_scratch_scalar(kFluidWeightSumField);
+    fluid_force_ = p.declare_scratch_vector(kFluidForceField);
     grain_liquid_list_ = world.request_neighbours(kGranularMask, kLiquidMask);
     // The voidage is an SPH sum over the whole kernel support, farther than contacts reach.
     grain_voidage_list_ = world.request_neighbours(kGranularMask, kGranularMask);
@@ -146,6 +148,14 @@ void DemSolver::step(World& world, Real dt, StageRunner& run) {
   run("dem_contacts", [&] {
     const Particles& particles = world.particles();
     owned_.rebuild(particles);
+    ParticleRange holders = owned_.range();
+    if (particles.ghost_count() > 0) {
+      holders_.assign(owned_.range().indices, owned_.range().indices + owned_.size());
+      for (std::size_t i = particles.owned_size(); i < particles.size(); ++i)
+        if (particles.type[i] == ParticleType::Granular && owned_.owns(particles.material[i]))
+          holders_.push_back(std::uint32_t(i));
+      holders = ParticleRange{holders_.data(), holders_.size()};
+    }
     rigid_.clear();
     if (reaction_list_ >= 0)
       for (std::size_t i = 0; i < particles.size(); ++i)
@@ -156,12 +166,14 @@ void DemSolver::step(World& world, Real dt, StageRunner& run) {
     sources.boxes = &world.containers();
     sources.radius = particles[radius_].data();
     sources.skin = skin_;
-    contacts_.rebuild(particles, owned_, sources, world.executor());
+    if (domain_) contacts_.follow_migration(*domain_);
+    contacts_.rebuild(particles, owned_, holders, sources, world.executor());
     // Velocity Verlet (as in LIGGGHTS): kick half, drift, forces at the new positions with the
     // half-step velocities, kick half. The forces are kept in particle fields, so they follow the
     // particles through reordering; the first step computes them first.
     if (liquid) interpolate_fluid(world);
     a = arrays(world);
+    a.holders = holders;
     if (!primed_) {
       run_dem_first_forces(world.executor(), a, h_);
       primed_ = true;
@@ -175,7 +187,10 @@ void DemSolver::step(World& world, Real dt, StageRunner& run) {
 
 void DemSolver::save_state(StateWriter& out) const {
   out.put(std::uint8_t(primed_));
-  contacts_.save_state(out);
+  if (domain_)
+    contacts_.save_gathered(out, *domain_);
+  else
+    contacts_.save_state(out);
 }
 
 void DemSolver::restore_state(StateReader& in) {
@@ -184,10 +199,10 @@ void DemSolver::restore_state(StateReader& in) {
 }
 
 void DemSolver::interpolate_fluid(World& world) {
-  const Particles& p = world.particles();
+  Particles& p = world.particles();
   fluid_.assign(p.size(), GrainFluidState{});
-  fluid_weight_sum_.assign(p.size(), 0);
-  fluid_force_.assign(p.size(), Vec3{});
+  std::fill(p[fluid_force_].begin(), p[fluid_force_].end(), Vec3{});
+  // Ghosts' positions are current at the step's start: the liquid reads them as they were.
   start_position_.assign(p.position.begin(), p.position.end());
   world.executor().run(
       owned_.range(),
@@ -195,7 +210,7 @@ void DemSolver::interpolate_fluid(World& world) {
                          view_of(world.neighbours(grain_voidage_list_)), world.kernel(),
                          p.position.data(), p.velocity.data(), p.mass.data(), p.type.data(),
                          p.material.data(), p[radius_].data(), liquid_density_.data(),
-                         liquid_viscosity_.data(), fluid_weight_sum_.data(), fluid_.data()});
+                         liquid_viscosity_.data(), p[fluid_weight_sum_].data(), fluid_.data()});
 }
 
 void DemSolver::liquid_reactions(World& world) {
@@ -205,7 +220,7 @@ void DemSolver::liquid_reactions(World& world) {
       DemLiquidReactionStage{view_of(world.neighbours(liquid_grain_list_)), world.kernel(),
                              start_position_.data(), p.mass.data(), p.type.data(),
                              p.material.data(), liquid_density_.data(), owned_.materials(),
-                             fluid_weight_sum_.data(), fluid_force_.data(),
+                             p[fluid_weight_sum_].data(), p[fluid_force_].data(),
                              world.coupling()[CouplingArray::LiquidForce].data()});
 }
 
@@ -216,6 +231,7 @@ DemArrays DemSolver::arrays(World& world) {
   a.contacts = contacts_.view();
   a.pairs = pairs_->table();
   a.owned = owned_.range();
+  a.holders = owned_.range();
   a.rigid = ParticleRange{rigid_.data(), rigid_.size()};
   a.x = p.position.data();
   a.v = p.velocity.data();
@@ -227,7 +243,7 @@ DemArrays DemSolver::arrays(World& world) {
   a.boxes = world.containers().data();
   a.gravity = world.settings().gravity;
   a.fluid = fluid_.empty() ? nullptr : fluid_.data();
-  a.fluid_force = fluid_force_.data();
+  a.fluid_force = fluid_.empty() ? nullptr : p[fluid_force_].data();
   a.force = p[force_].data();
   a.torque = p[torque_].data();
   a.boundary_force =

@@ -46,6 +46,8 @@ inline constexpr const char* kTorqueField = "dem.torque";  // N m
 inline constexpr const char* kWallNormalField = "dem.wall_normal";
 inline constexpr const char* kWallShearField = "dem.wall_shear";
 inline constexpr const char* kContactLoadField = "dem.contact_load";
+inline constexpr const char* kFluidWeightSumField = "dem.fluid_weight_sum";
+inline constexpr const char* kFluidForceField = "dem.fluid_force";
 
 struct DemParams {
   double substep_fraction = 0;  // of the shortest contact time
@@ -69,12 +71,8 @@ class DemSolver : public Solver {
   std::vector<SolverTable> tables(const World& world) const override;
   std::vector<std::vector<double>> table_rows(const World& world,
                                               const Particles& state) const override;
-  // The contact springs live in this solver, keyed by grain, and do not travel with grains that
-  // migrate between ranks yet.
-  std::string cannot_split() const override {
-    return "granular materials do not run across MPI ranks yet: run this scene on one rank "
-           "(without mpirun -n)";
-  }
+  // Split over ranks, the springs follow their grains (dem_contact_list.h).
+  void split_over(const ParticleDomain& domain) override { domain_ = &domain; }
   void save_state(StateWriter& out) const override;
   void restore_state(StateReader& in) override;
 
@@ -95,8 +93,10 @@ class DemSolver : public Solver {
   DemModel model_;
   double substep_fraction_;
   std::vector<MaterialId> materials_;
-  OwnedParticles owned_;              // my grains, this step
-  std::vector<std::uint32_t> rigid_;  // rigid boundary particles, this step
+  OwnedParticles owned_;                    // my grains, this step
+  std::vector<std::uint32_t> holders_;      // my grains, then my ghost grains (split worlds)
+  const ParticleDomain* domain_ = nullptr;  // the world's ranks; null: one rank
+  std::vector<std::uint32_t> rigid_;        // rigid boundary particles, this step
   std::unique_ptr<DemPairs> pairs_;
   DemContactList contacts_;  // this world step's candidates and their springs
   FieldHandle<Real> radius_;
@@ -110,9 +110,10 @@ class DemSolver : public Solver {
   int grain_liquid_list_ = -1, liquid_grain_list_ = -1, grain_voidage_list_ = -1;
   std::vector<Real> liquid_density_, liquid_viscosity_;  // by material
   std::vector<GrainFluidState> fluid_;                   // by particle, this step
-  std::vector<Real> fluid_weight_sum_;                   // sum_j V_j W_ij, by particle
   std::vector<Vec3> start_position_;                     // grains at the step's start
-  std::vector<Vec3> fluid_force_;                        // step average, by particle
+  // Read by the grains' liquid neighbours, so fields (scratch: ghosts carry them).
+  FieldHandle<Real> fluid_weight_sum_;  // sum_j V_j W_ij
+  FieldHandle<Vec3> fluid_force_;       // the step's average fluid force on each grain
   SolverStats stats_;
 };
 

@@ -19,4 +19,12 @@ struct DemSpringState {
   std::vector<std::uint32_t> begin_by_id, count_by_id;  // into key and xi
 };
 
+// One carried spring: the pair's holder and key (dem_contact_stages.h) and its spring xi. Split
+// worlds send these between ranks as raw bytes.
+struct DemSpringRecord {
+  std::uint32_t holder;  // stable id
+  std::uint32_t key;
+  Vec3 xi;
+};
+
 }  // namespace upf

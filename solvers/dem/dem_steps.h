@@ -15,8 +15,9 @@ struct DemArrays {
   DemModel model;
   DemContactView contacts;
   DemPairTable pairs;
-  ParticleRange owned;  // the solver's grains
-  ParticleRange rigid;  // rigid boundary particles whose reactions are wanted (may be empty)
+  ParticleRange owned;    // the solver's grains
+  ParticleRange holders;  // the grains that hold candidates: owned, then ghosts on split worlds
+  ParticleRange rigid;    // rigid boundary particles whose reactions are wanted (may be empty)
   Vec3* x;
   Vec3* v;
   Vec3* w;  // angular velocity
@@ -49,7 +50,7 @@ void run_dem_forces(const Executor& exec, const DemArrays& a, Real h, Real t_in_
   record.wall_shear = a.wall_normal ? a.wall_shear : nullptr;
   record.weight = weight;
   record.restart = first;
-  exec.run(a.owned,
+  exec.run(a.holders,
            DemForcesStage{a.model,  a.contacts, a.pairs,       a.x,     a.v,       a.w,   a.mass,
                           a.radius, a.type,     a.material,    a.boxes, a.gravity, h,     t_in_step,
                           a.fluid,  weight,     a.fluid_force, a.force, a.torque,  record});

@@ -115,15 +115,36 @@ TEST_F(MpiLaunch, MpirunSplitsARunIntoTheOneRankRunsFiles) {
   }
 }
 
+// Grains too: the frames and the walls' force table of the one-rank run (the sample sand pile,
+// shorter and narrower).
+TEST_F(MpiLaunch, MpirunSplitsAGrainRunIntoTheOneRankRunsFiles) {
+  nlohmann::json doc =
+      nlohmann::json::parse(contents(fs::path(UPF_SOURCE_DIR) / "samples" / "sand_pile.json"));
+  doc["containers"][0]["max"] = {0.3, 0.2, 0.04};
+  doc["granular_blocks"][0]["max"] = {0.08, 0.12, 0.04};
+  doc["neighbours"] = {{"reorder_every", 0}};
+  const std::string scene = write(doc);
+  const std::string options = " --end 0.1 --set /output/fps=50 -q -o ";
+  const fs::path alone = dir_ / "alone", split = dir_ / "split";
+  const Result one = run_upf("run " + scene + options + alone.string() + " -j 1");
+  ASSERT_EQ(one.code, 0) << one.output;
+  const Result r = mpirun(2, "run " + scene + options + split.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_GE(expect_same_frames(alone, split), 6);
+  for (const char* file : {"probes.csv", "dem_linear_walls.csv", "particles.pvd"})
+    EXPECT_EQ(contents(alone / file), contents(split / file)) << file;
+}
+
 // Bad input on a split run: every rank meets it, rank 0 reports it once, the job ends with 2 and
 // nothing is written.
 TEST_F(MpiLaunch, MpirunWithBadInputEndsEveryRankWithCodeTwo) {
-  std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / "sand_pile.json");
-  const std::string grains = write(nlohmann::json::parse(in));
+  nlohmann::json doc = sample();
+  doc["materials"]["water"]["solver"] = {{"name", "pcisph"}, {"stop_percentile", 50}};
+  const std::string percentile = write(doc);
   const fs::path out = dir_ / "out";
-  const Result r = mpirun(2, "run " + grains + " --end 0.01 -q -o " + out.string());
+  const Result r = mpirun(2, "run " + percentile + " --end 0.01 -q -o " + out.string());
   EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find("do not run across MPI ranks yet"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("stop_percentile 50"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
 }
 

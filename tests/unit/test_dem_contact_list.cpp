@@ -42,7 +42,7 @@ struct Scene {
     s.boxes = &boxes;
     s.radius = radius.data();
     s.skin = Real(0.002);
-    contacts.rebuild(particles, owned, s, CpuExecutor(1));
+    contacts.rebuild(particles, owned, owned.range(), s, CpuExecutor(1));
   }
   // The candidate of particle `holder` (by index) whose key is `key`, or -1.
   static int find(const DemContactList& c, std::size_t holder, std::uint32_t key) {
