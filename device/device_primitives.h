@@ -157,6 +157,11 @@ struct DeviceExecutor {
   void run(ParticleRange range, const Stage& stage) const {
     device::run<Backend>(range, stage);
   }
+  // One device: no ghosts to refresh (CpuExecutor::run_unshared).
+  template <class Stage>
+  void run_unshared(ParticleRange range, const Stage& stage) const {
+    device::run<Backend>(range, stage);
+  }
   template <class Value>
   Real max_of(ParticleRange range, const Value& value, Real floor = 0) const {
     return device::max_of<Backend>(range, value, floor);

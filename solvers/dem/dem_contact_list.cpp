@@ -43,7 +43,7 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned, Pa
   const DemCandidateSources s = candidate_sources(p, owned, sources);
 
   offsets_.assign(n + 1, 0);
-  exec.run(holders, DemCountCandidatesStage{s, offsets_.data()});
+  exec.run_unshared(holders, DemCountCandidatesStage{s, offsets_.data()});
   scan_counts(offsets_);
   const std::size_t total = offsets_[n];
   partner_.resize(total);
@@ -53,8 +53,8 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned, Pa
   partner_torque_.resize(total);
   partner_rolling_.resize(total);
   touching_.resize(total);
-  exec.run(holders, DemFillCandidatesStage{s, offsets_.data(), partner_.data(), key_.data(),
-                                           xi_.data(), touching_.data()});
+  exec.run_unshared(holders, DemFillCandidatesStage{s, offsets_.data(), partner_.data(),
+                                                    key_.data(), xi_.data(), touching_.data()});
   carry_springs(p, holders, exec);
   build_reverse(s, n, exec);
 }
@@ -62,13 +62,15 @@ void DemContactList::rebuild(const Particles& p, const OwnedParticles& owned, Pa
 void DemContactList::carry_springs(const Particles& p, ParticleRange holders,
                                    const CpuExecutor& exec) {
   // last_begin_by_id_ still describes last_key_ / last_xi_.
-  exec.run(holders, DemCarrySpringsStage{p.id.data(), offsets_.data(), key_.data(), xi_.data(),
+  exec.run_unshared(holders,
+                    DemCarrySpringsStage{p.id.data(), offsets_.data(), key_.data(), xi_.data(),
                                          last_begin_by_id_.data(), last_count_by_id_.data(),
                                          std::uint32_t(last_count_by_id_.size()), last_key_.data(),
                                          last_xi_.data()});
   last_begin_by_id_.assign(p.id_bound(), 0);
   last_count_by_id_.assign(p.id_bound(), 0);
-  exec.run(holders, DemRecordByIdStage{p.id.data(), offsets_.data(), last_begin_by_id_.data(),
+  exec.run_unshared(holders,
+                    DemRecordByIdStage{p.id.data(), offsets_.data(), last_begin_by_id_.data(),
                                        last_count_by_id_.data()});
 }
 
@@ -76,11 +78,11 @@ void DemContactList::build_reverse(const DemCandidateSources& s, std::size_t n,
                                    const CpuExecutor& exec) {
   const DemReverseCandidates reverse{s, offsets_.data(), partner_.data()};
   reverse_offsets_.assign(n + 1, 0);
-  exec.run(all_particles(n), DemCountReverseStage{reverse, reverse_offsets_.data()});
+  exec.run_unshared(all_particles(n), DemCountReverseStage{reverse, reverse_offsets_.data()});
   scan_counts(reverse_offsets_);
   reverse_.resize(reverse_offsets_[n]);
-  exec.run(all_particles(n),
-           DemFillReverseStage{reverse, reverse_offsets_.data(), reverse_.data()});
+  exec.run_unshared(all_particles(n),
+                    DemFillReverseStage{reverse, reverse_offsets_.data(), reverse_.data()});
 }
 
 void DemContactList::save_state(StateWriter& out) const {

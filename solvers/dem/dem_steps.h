@@ -50,12 +50,17 @@ void run_dem_forces(const Executor& exec, const DemArrays& a, Real h, Real t_in_
   record.wall_shear = a.wall_normal ? a.wall_shear : nullptr;
   record.weight = weight;
   record.restart = first;
-  exec.run(a.holders,
-           DemForcesStage{a.model,  a.contacts, a.pairs,       a.x,     a.v,       a.w,   a.mass,
-                          a.radius, a.type,     a.material,    a.boxes, a.gravity, h,     t_in_step,
-                          a.fluid,  weight,     a.fluid_force, a.force, a.torque,  record});
-  exec.run(a.owned, DemGatherPairsStage{a.contacts, a.force, a.torque});
-  if (last && a.contact_load) exec.run(a.owned, DemContactLoadStage{a.contacts, a.contact_load});
+  // The forces and the candidates' records are read back only by the grains (and body particles)
+  // themselves: no ghost refresh until the kick, which refreshes every array (the step averages
+  // the liquid reads included).
+  exec.run_unshared(
+      a.holders,
+      DemForcesStage{a.model,  a.contacts, a.pairs,       a.x,     a.v,       a.w,   a.mass,
+                     a.radius, a.type,     a.material,    a.boxes, a.gravity, h,     t_in_step,
+                     a.fluid,  weight,     a.fluid_force, a.force, a.torque,  record});
+  exec.run_unshared(a.owned, DemGatherPairsStage{a.contacts, a.force, a.torque});
+  if (last && a.contact_load)
+    exec.run_unshared(a.owned, DemContactLoadStage{a.contacts, a.contact_load});
 }
 
 // The forces at the state a run starts from, which velocity Verlet's first half kick needs.
@@ -81,7 +86,7 @@ void run_dem_substeps(const Executor& exec, const DemArrays& a, Real dt, int sub
     run("dem_contacts", [&] {
       run_dem_forces(exec, a, h, Real(k + 1) * h, h / dt, k == 0, k + 1 == substeps);
       if (a.boundary_force)
-        exec.run(a.rigid, DemBoundaryReactionStage{a.contacts, h / dt, a.boundary_force});
+        exec.run_unshared(a.rigid, DemBoundaryReactionStage{a.contacts, h / dt, a.boundary_force});
     });
     run("dem_integration", [&] { run_dem_kick_drift(exec, a, Real(0.5) * h, 0); });
   }

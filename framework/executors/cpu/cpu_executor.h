@@ -44,6 +44,16 @@ class CpuExecutor {
     if (collectives_) collectives_->refresh_ghosts();
   }
 
+  // Like run, without the ghost refresh: for a stage whose outputs no particle but its own reads
+  // before a later stage refreshes the ghosts (DEM's contact forces, read back by their own
+  // grains). On one rank it is run.
+  template <ParticleStage Stage>
+  void run_unshared(ParticleRange range, const Stage& stage) const {
+    const std::int64_t count = static_cast<std::int64_t>(range.size);
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (std::int64_t k = 0; k < count; ++k) stage(range[std::size_t(k)]);
+  }
+
   // Like run, but hands out small chunks dynamically: for uneven work such as per-cell
   // neighbour gathering.
   template <ParticleStage Stage>
