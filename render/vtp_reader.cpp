@@ -224,15 +224,61 @@ const VtpArray* PolyData::cell_array(std::string_view name) const {
   return find(cell_data, name);
 }
 
+namespace {
+
+// The pieces a .pvtp joins, in its order, as paths beside it.
+std::vector<std::filesystem::path> pvtp_sources(const std::filesystem::path& path,
+                                                const std::string& bytes) {
+  std::vector<std::filesystem::path> sources;
+  bool parallel = false;
+  for (const XmlTag& tag : read_xml_tags(bytes)) {
+    if (tag.name == "VTKFile" && !tag.closing)
+      parallel = tag.attribute("type") == "PPolyData";
+    else if (tag.name == "Piece" && !tag.closing)
+      sources.push_back(path.parent_path() / tag.attribute("Source").value_or(""));
+  }
+  if (!parallel) throw std::runtime_error("not a PPolyData file");
+  return sources;
+}
+
+// Appends `piece`'s points and point arrays to `whole` (particle pieces: no cells).
+void append_piece(PolyData& whole, PolyData piece, const std::filesystem::path& from) {
+  if (!piece.triangles.empty()) throw InputError(from.string(), "a piece with polygons");
+  // A rank without particles of the frame's types writes an empty piece.
+  if (piece.points.empty() && !whole.point_data.empty()) return;
+  if (whole.points.empty()) {
+    whole = std::move(piece);
+    return;
+  }
+  if (piece.point_data.size() != whole.point_data.size())
+    throw InputError(from.string(), "its point arrays differ from the first piece's");
+  whole.points.insert(whole.points.end(), piece.points.begin(), piece.points.end());
+  for (std::size_t a = 0; a < piece.point_data.size(); ++a) {
+    VtpArray& to = whole.point_data[a];
+    const VtpArray& add = piece.point_data[a];
+    if (add.name != to.name || add.components != to.components)
+      throw InputError(from.string(), "array " + add.name + " differs from the first piece's");
+    to.values.insert(to.values.end(), add.values.begin(), add.values.end());
+  }
+}
+
+}  // namespace
+
 PolyData read_vtp(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open the frame file");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::filesystem::path> sources;
   try {
-    return parse(bytes);
+    if (path.extension() != ".pvtp") return parse(bytes);
+    sources = pvtp_sources(path, bytes);
   } catch (const std::runtime_error& e) {
     throw InputError(path.string(), std::string("not a frame upf can read: ") + e.what());
   }
+  // A split run's frame, one piece per rank (framework/run/frame_pieces.h): one data set.
+  PolyData whole;
+  for (const auto& source : sources) append_piece(whole, read_vtp(source), source);
+  return whole;
 }
 
 }  // namespace upf::render

@@ -39,6 +39,7 @@ struct PolyData {
   const VtpArray* cell_array(std::string_view name) const;
 };
 
+// A .pvtp (a split run's frame as pieces per rank) reads as its pieces' points joined, in order.
 // Throws InputError naming `path` when it cannot be read or is not a file upf could have written.
 PolyData read_vtp(const std::filesystem::path& path);
 

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "framework/output/atomic_file.h"
 #include "framework/output/vtk_appended_data.h"
 #include "framework/particles/array_sizes.h"
 
@@ -116,6 +117,24 @@ void write_vtp(const std::filesystem::path& path, const Particles& particles,
     write_with_index<std::int32_t>(path, particles, std::move(point_data), "Int32", compression);
   else
     write_with_index<std::int64_t>(path, particles, std::move(point_data), "Int64", compression);
+}
+
+void write_pvtp(const std::filesystem::path& path, const Particles& like,
+                const std::vector<std::string>& fields, const std::vector<std::string>& pieces) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt64\">\n"
+        << "  <PPolyData GhostLevel=\"0\">\n    <PPointData>\n";
+    for (const vtk_xml::Array& a : point_arrays(like, fields))
+      out << "      <PDataArray type=\"" << a.type << "\" Name=\"" << xml_escape(a.name)
+          << "\" NumberOfComponents=\"" << a.components << "\"/>\n";
+    out << "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"" << kRealType
+        << "\" Name=\"Points\" NumberOfComponents=\"3\"/>\n    </PPoints>\n";
+    for (const std::string& piece : pieces)
+      out << "    <Piece Source=\"" << xml_escape(piece) << "\"/>\n";
+    out << "  </PPolyData>\n</VTKFile>\n";
+  });
 }
 
 std::size_t vtp_data_bytes(const Particles& particles, const std::vector<std::string>& fields) {

@@ -28,6 +28,13 @@ void write_vtp(const std::filesystem::path& path, const Particles& particles,
                const std::vector<std::string>& fields,
                vtk_xml::Compression compression = vtk_xml::Compression::none);
 
+// Writes the parallel PolyData file (.pvtp) that makes `pieces` (.vtp files written by write_vtp
+// with the same `fields`, paths relative to the .pvtp's directory) one data set for ParaView and
+// VTK's vtkXMLPPolyDataReader. `like`: particles with the fields of the pieces (any count: the
+// array declarations are all it gives). Atomic; throws OutputError if it cannot be written.
+void write_pvtp(const std::filesystem::path& path, const Particles& like,
+                const std::vector<std::string>& fields, const std::vector<std::string>& pieces);
+
 // The bytes write_vtp writes for `particles` uncompressed, apart from the XML header (a few
 // hundred bytes): for the size estimate of a run's frames.
 std::size_t vtp_data_bytes(const Particles& particles, const std::vector<std::string>& fields);

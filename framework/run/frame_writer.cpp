@@ -24,7 +24,7 @@ std::string frame_file(const char* pattern, int frame) {
 
 FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
                          std::vector<std::string> fields, bool enabled, const World& world,
-                         SurfaceMesher surface_mesher, bool resuming)
+                         std::size_t frozen_count, SurfaceMesher surface_mesher, bool resuming)
     : out_dir_(out_dir),
       fields_(std::move(fields)),
       vtp_(enabled && scene.output.vtp),
@@ -35,8 +35,7 @@ FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescri
       ply_types_(scene.output.ply_types),
       ply_z_up_(scene.output.ply_z_up),
       frozen_piece_(vtp_ && scene.output.frozen_once &&
-                    in_mask(scene.output.vtp_types, ParticleType::Frozen) &&
-                    world.particles().count(ParticleType::Frozen) > 0),
+                    in_mask(scene.output.vtp_types, ParticleType::Frozen) && frozen_count > 0),
       spacing_(scene.world.spacing),
       series_(out_dir / "particles.pvd"),
       world_(world),
@@ -71,15 +70,18 @@ void with_types(const Particles& particles, TypeMask types, Write&& write) {
 
 }  // namespace
 
-void FrameWriter::write(const Particles& particles, double time) {
+void FrameWriter::write(const Particles& particles, double time, const FramePieceNames& pieces) {
   std::vector<std::string> files;
-  if (vtp_) {
+  if (vtp_ && !pieces.particles.empty()) {
+    files.push_back(pieces.particles);
+    if (!pieces.frozen.empty()) files.push_back(pieces.frozen);
+  } else if (vtp_) {
     files.push_back(frame_file("frames/frame_%05d.vtp", frames_));
     with_types(particles, frame_types(vtp_types_, frozen_piece_), [&](const Particles& p) {
       write_vtp(out_dir_ / files.back(), p, fields_, compression_);
     });
   }
-  if (frozen_piece_) {
+  if (frozen_piece_ && pieces.particles.empty()) {
     // Frozen particles never move: their positions at the first frame are those at every frame.
     if (!frozen_written_) {
       write_vtp(out_dir_ / kFrozenFile,

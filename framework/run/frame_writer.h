@@ -13,6 +13,7 @@
 #include "framework/output/pvd_series.h"
 #include "framework/output/vtk_appended_data.h"
 #include "framework/run/body_outputs.h"
+#include "framework/run/frame_pieces.h"
 #include "framework/scene/scene.h"
 #include "framework/world/world.h"
 
@@ -28,16 +29,21 @@ class FrameWriter {
  public:
   // `enabled` false writes no frame files (bodies.csv still). A scene asking for surfaces
   // without a `surface_mesher` is an InputError at /output/formats. `resuming`: the logs wait
-  // for restore_state.
+  // for restore_state. `frozen_count`: the world's frozen particles over every rank
+  // (World::count, a collective on a split world, so the caller's: only rank 0 writes frames).
   FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
               std::vector<std::string> fields, bool enabled, const World& world,
-              SurfaceMesher surface_mesher, bool resuming);
+              std::size_t frozen_count, SurfaceMesher surface_mesher, bool resuming);
 
   // After each step of length `dt` ending at `time` (body_outputs.h); `row`: a row of
   // body_forces.csv now.
   void record_step(double time, double dt, bool row) { bodies_.record_step(time, dt, row); }
   // Writes the frame of `particles` at `time`: the world's state, or its last good state.
-  void write(const Particles& particles, double time);
+  // `pieces`: the .vtp frame (and the frozen piece) went out as pieces per rank (frame_pieces.h):
+  // the series lists those files instead.
+  void write(const Particles& particles, double time, const FramePieceNames& pieces = {});
+  // Whether write() reads `particles` beyond what went out as pieces (PLY, surfaces).
+  bool reads_particles_beside_pieces() const { return ply_ || surface_; }
   // The bytes write() puts on disk per frame for `particles` uncompressed (particle files only:
   // not the surface meshes, whose size depends on the flow, nor the bodies' small files), and
   // those written once (the frozen piece): the size estimate of a run.

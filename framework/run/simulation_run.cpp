@@ -83,21 +83,23 @@ StepMetrics step_metrics(const World& world) {
 class RunRecorder {
  public:
   RunRecorder(const SceneDescription& scene, const RunOptions& options, const World& world,
-              std::vector<std::string> fields, RunResult& result, FrameClock& clock)
+              std::vector<std::string> fields, std::size_t frozen_count, RunResult& result,
+              FrameClock& clock)
       : scene_(scene),
         world_(world),
         result_(result),
         clock_(clock),
         out_dir_(options.out_dir),
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
-                options.surface_mesher, options.resume),
+                frozen_count, options.surface_mesher, options.resume),
         metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume),
         probes_(options.out_dir / "probes.csv", probe_names(scene), options.resume),
         tables_(world, options.out_dir, options.resume) {}
 
-  // A frame of `state` (the world's particles, or its last good state) at `time`.
-  void frame(const Particles& state, double time) {
-    frames_.write(state, time);
+  // A frame of `state` (the world's particles, or its last good state) at `time`; `pieces`: the
+  // .vtp frame went out as pieces per rank.
+  void frame(const Particles& state, double time, const FramePieceNames& pieces = {}) {
+    frames_.write(state, time, pieces);
     sample_probes(state, time);
     metrics_.flush();
   }
@@ -118,6 +120,11 @@ class RunRecorder {
   void step_row(const StepMetrics& m) {
     metrics_.add(m, world_.last_step());
     totals_.add_step(world_.last_step(), result_);
+  }
+  int frames() const { return frames_.frames(); }
+  // Whether a frame reads the particles beyond the .vtp pieces: probes, tables, PLY, surfaces.
+  bool frame_reads_particles() const {
+    return samples_between_frames() || frames_.reads_particles_beside_pieces();
   }
   // Whether a step with this count records probes and tables between frames.
   bool samples_between_frames() const { return !scene_.probes.empty() || !tables_.empty(); }
@@ -255,8 +262,26 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
   result.total_particles = world.executor().total(world.particles().owned_size());
   result.threads = world.executor().threads();
   FrameClock clock(scene.output.fps);
+  std::optional<FramePieces> pieces;
+  if (domain && scene.output.pieces_per_rank && scene.output.vtp && options.write_frames) {
+    (void)domain->max(0.0);  // a barrier: rank 0 has cleared an earlier run's files
+    pieces.emplace(options.out_dir, scene, fields, world, options.resume);
+  }
+  const std::size_t frozen_count = world.count(ParticleType::Frozen);  // every rank: a collective
   std::optional<RunRecorder> recorder;
-  if (records) recorder.emplace(scene, options, world, std::move(fields), result, clock);
+  if (records)
+    recorder.emplace(scene, options, world, std::move(fields), frozen_count, result, clock);
+  // Whether a frame gathers every rank's particles on rank 0: always, unless the .vtp frames go
+  // out as pieces per rank and nothing else in a frame reads the particles.
+  const bool frames_gather = !pieces || agreed(recorder && recorder->frame_reads_particles());
+  // A frame of `mine` (this rank's particles, or its last good state) at `time`.
+  auto write_frame = [&](const Particles& mine, double time) {
+    FramePieceNames names;
+    if (pieces)
+      names = pieces->write(mine, int(domain->max(recorder ? double(recorder->frames()) : 0.0)));
+    const Particles& state = frames_gather ? whole(mine) : mine;
+    if (recorder) recorder->frame(state, time, names);
+  };
   if (options.resume) {
     StateReader in = read_checkpoint(checkpoint_path);
     (void)read_header(in);
@@ -272,11 +297,13 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
     clock.start_at(world.time());
   }
   if (!options.resume) {
+    // Gathered once, for the size estimate, even when the frames go out as pieces.
     const Particles& first = whole(world.particles());
     if (recorder && options.write_frames && options.on_output_estimate &&
         world.time() < end - 1e-12)
       options.on_output_estimate(recorder->estimate(first, end, true));
-    if (recorder) recorder->frame(first, world.time());
+    const FramePieceNames names = pieces ? pieces->write(world.particles(), 0) : FramePieceNames{};
+    if (recorder) recorder->frame(first, world.time(), names);
   }
 
   if (options.resume && world.time() >= end - 1e-12) {
@@ -331,8 +358,7 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
       const bool row_due = probe_every > 0 && world.step_count() % std::uint64_t(probe_every) == 0;
       if (recorder) recorder->record_step(t, at_frame || row_due);
       if (at_frame) {
-        const Particles& state = whole(world.particles());
-        if (recorder) recorder->frame(state, t);
+        write_frame(world.particles(), t);
         clock.passed(t);
       } else if (row_due && agreed(recorder && recorder->samples_between_frames())) {
         const Particles& state = whole(world.particles());
@@ -354,8 +380,7 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
   } catch (const InstabilityError& e) {
     // The state before the failed step is the last good one: keep it on disk, then report. Every
     // rank is here: the stability check is global.
-    const Particles& state = whole(world.last_good());
-    if (recorder) recorder->frame(state, world.time() - world.last_step().dt);
+    write_frame(world.last_good(), world.time() - world.last_step().dt);
     result.status = "unstable";
     result.failure = e.what();
     if (recorder) recorder->finish(wall_seconds());

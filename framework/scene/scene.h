@@ -79,6 +79,11 @@ struct OutputDesc {
   // frames/frozen.vtp, a part of every time step in particles.pvd, and leaves them out of the
   // frame files; "every_frame" keeps them in every frame.
   bool frozen_once = true;
+  // "pieces": on a run split over MPI ranks (docs/mpi.md), "per_rank" has every rank write its
+  // own particles of each .vtp frame (frames/frame_NNNNN_pRRRR.vtp), joined by
+  // frames/frame_NNNNN.pvtp, so no rank gathers a frame; "gathered" has rank 0 write the
+  // one-rank run's files. One rank writes the same files either way.
+  bool pieces_per_rank = false;
   // "types": which particle types each format writes ({"vtp": [...], "ply": [...]}); all four
   // unless the scene says.
   TypeMask vtp_types = kAllTypes;

@@ -483,7 +483,8 @@ void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
   if (it == doc.end() || !in.expect_object(*it, "/output")) return;
   const auto specs = output_setting_specs();
   std::vector<std::string> keys = spec_names(specs);
-  keys.insert(keys.end(), {"fields", "formats", "compression", "frozen", "types", "ply_up"});
+  keys.insert(keys.end(),
+              {"fields", "formats", "compression", "frozen", "types", "ply_up", "pieces"});
   in.check_keys(*it, "/output", keys);
   OutputDesc& output = scene.output;
   output.fps = in.number(*it, "/output", spec_named(specs, "fps"), output.fps);
@@ -499,6 +500,8 @@ void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
                                    output.frozen_once ? 0 : 1) == 0;
   output.ply_z_up =
       read_choice(in, *it, "/output", "ply_up", {"y", "z"}, output.ply_z_up ? 1 : 0) == 1;
+  output.pieces_per_rank = read_choice(in, *it, "/output", "pieces", {"gathered", "per_rank"},
+                                       output.pieces_per_rank ? 1 : 0) == 1;
   if (auto f = it->find("types"); f != it->end()) read_output_types(in, *f, output);
 }
 

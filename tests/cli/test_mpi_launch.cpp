@@ -10,6 +10,7 @@
 
 #include "apps/upf/mpi_launch.h"
 #include "cli_support.h"
+#include "framework/compare/python_runner.h"
 
 namespace upf::cli_test {
 namespace {
@@ -146,6 +147,45 @@ TEST_F(MpiLaunch, MpirunWithBadInputEndsEveryRankWithCodeTwo) {
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("stop_percentile 50"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// /output/pieces "per_rank": each rank writes its own particles of a frame, rank 0 the .pvtp that
+// joins them, listed in particles.pvd. VTK's parallel reader (ParaView's) opens each as one data
+// set holding the one-rank run's particles, value for value (check_pvtp_frames.py), and `upf
+// render` draws the run.
+TEST_F(MpiLaunch, MpirunWritesFramesAsOnePiecePerRank) {
+  nlohmann::json doc = sample();
+  doc["output"]["pieces"] = "per_rank";
+  doc["probes"] = nlohmann::json::array();  // nothing else reads every particle: no gather
+  const std::string scene = write(doc);
+  const fs::path alone = dir_ / "alone", split = dir_ / "split";
+  const std::string options = " --end 0.06 --set /output/fps=50 -q -o ";
+  const Result one = run_upf("run " + scene + options + alone.string() + " -j 1");
+  ASSERT_EQ(one.code, 0) << one.output;
+  EXPECT_TRUE(fs::exists(alone / "frames" / "frame_00000.vtp")) << "one rank writes no pieces";
+  const Result r = mpirun(3, "run " + scene + options + split.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* name : {"frame_00000", "frame_00003", "frozen"}) {
+    EXPECT_TRUE(fs::exists(split / "frames" / (std::string(name) + ".pvtp"))) << name;
+    for (int rank = 0; rank < 3; ++rank)
+      EXPECT_TRUE(fs::exists(split / "frames" /
+                             (std::string(name) + "_p000" + std::to_string(rank) + ".vtp")))
+          << name << " rank " << rank;
+  }
+  EXPECT_FALSE(fs::exists(split / "frames" / "frame_00000.vtp"));
+
+  const fs::path log = dir_ / "check_pvtp_frames.log";
+  const auto check =
+      upf::run_python_script(fs::path(UPF_SOURCE_DIR) / "tests" / "cli" / "check_pvtp_frames.py",
+                             {split.string(), alone.string(), "3"}, log);
+  if (check.missing_module) GTEST_SKIP() << "VTK's Python bindings are not installed";
+  EXPECT_TRUE(check.ok) << check.error << "\n" << contents(log);
+  EXPECT_NE(contents(log).find("4 time steps checked"), std::string::npos) << contents(log);
+
+  const Result render =
+      run_upf("render " + split.string() + " --frames 3:3 --size 160x90 --no-video -q");
+  EXPECT_EQ(render.code, 0) << render.output;
+  EXPECT_TRUE(fs::exists(split / "render" / "frame_00003.png"));
 }
 
 // A split run's checkpoint is a one-rank checkpoint: written at 4 ranks, resumed at 2, the run

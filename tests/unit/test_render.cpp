@@ -17,6 +17,7 @@
 #include "framework/output/mesh_vtp_writer.h"
 #include "framework/output/vtp_writer.h"
 #include "framework/particles/particles.h"
+#include "framework/particles/particles_of_types.h"
 #include "framework/world/body_system.h"
 #include "framework/world/world.h"
 #include "render/camera.h"
@@ -68,6 +69,35 @@ TEST_F(RenderTest, ReadsBackWhatWriteVtpWrote) {
   EXPECT_EQ(d.point_array("velocity")->components, 3);
   EXPECT_DOUBLE_EQ(*field_value(d, "speed", 1), 5.0);  // |(3, 4, 0)|
   EXPECT_FALSE(field_value(d, "no_such_field", 0).has_value());
+}
+
+// A split run's frame as pieces per rank (write_pvtp, framework/run/frame_pieces.h) reads as one
+// data set, the pieces' particles in the .pvtp's order; an empty piece (a rank without
+// particles of the frame's types) is allowed, a missing one is an error naming it.
+TEST_F(RenderTest, ReadsAFrameWrittenAsPiecesAsOne) {
+  Particles first = two_liquid_particles(0.25, 0.75);
+  Particles second;
+  second.add({1, 2, 3}, {0, 0, 0}, 1, ParticleType::Frozen, 1);
+  second.scalar_field("heat", Real(0.5), true);
+  write_vtp(dir_ / "f_p0000.vtp", first, {"heat"});
+  write_vtp(dir_ / "f_p0001.vtp", particles_of_types(first, mask_of(ParticleType::Rigid)),
+            {"heat"});
+  write_vtp(dir_ / "f_p0002.vtp", second, {"heat"});
+  write_pvtp(dir_ / "f.pvtp", first, {"heat"}, {"f_p0000.vtp", "f_p0001.vtp", "f_p0002.vtp"});
+  const PolyData d = read_vtp(dir_ / "f.pvtp");
+  ASSERT_EQ(d.points.size(), 3u);
+  EXPECT_EQ(d.points[2], Eigen::Vector3f(1, 2, 3));
+  EXPECT_EQ(d.point_array("type")->values, (std::vector<double>{0, 0, 3}));
+  EXPECT_EQ(d.point_array("heat")->values, (std::vector<double>{0.25, 0.75, 0.5}));
+  EXPECT_EQ(d.point_array("velocity")->values.size(), 9u);
+
+  write_pvtp(dir_ / "g.pvtp", first, {"heat"}, {"f_p0000.vtp", "gone.vtp"});
+  try {
+    read_vtp(dir_ / "g.pvtp");
+    ADD_FAILURE() << "a missing piece was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("gone.vtp"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(RenderTest, ReadsBackBodyMeshes) {
