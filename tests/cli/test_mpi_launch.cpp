@@ -11,6 +11,7 @@
 #include "apps/upf/mpi_launch.h"
 #include "cli_support.h"
 #include "framework/compare/python_runner.h"
+#include "render/vtp_reader.h"
 
 namespace upf::cli_test {
 namespace {
@@ -186,6 +187,38 @@ TEST_F(MpiLaunch, MpirunWritesFramesAsOnePiecePerRank) {
       run_upf("render " + split.string() + " --frames 3:3 --size 160x90 --no-video -q");
   EXPECT_EQ(render.code, 0) << render.output;
   EXPECT_TRUE(fs::exists(split / "render" / "frame_00003.png"));
+}
+
+// A rank that dies mid-run (killed: no error of ours to report) ends the job: mpirun notices,
+// ends the other ranks and exits non-zero, naming the rank. The frames written before are whole:
+// each was written atomically (a temporary file renamed), and every .vtp left reads back.
+TEST_F(MpiLaunch, ARankThatDiesEndsTheJobAndLeavesWholeFrames) {
+  nlohmann::json doc = sample();
+  doc["probes"] = nlohmann::json::array();
+  const std::string scene = write(doc);
+  const fs::path out = dir_ / "out";
+  const std::string upf = UPF_EXECUTABLE;
+  // Launch, wait for the third frame, kill one rank (a process whose command line starts with
+  // upf itself, not mpirun's), then wait for mpirun.
+  const Result r = run_shell(
+      "{ OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 "
+      "OMP_NUM_THREADS=1 timeout 300 mpirun --oversubscribe -n 2 " +
+      upf + " run " + scene + " --end 30 --set /output/fps=50 -q -o " + out.string() +
+      " & job=$!; for i in $(seq 1200); do [ -e " + (out / "frames" / "frame_00002.vtp").string() +
+      " ] && break; sleep 0.1; done; victim=$(pgrep -f \"^" + upf + " run " + scene +
+      "\" | tail -n 1); echo killing $victim; kill -KILL $victim; wait $job; "
+      "echo mpirun exited with $?; }");
+  EXPECT_NE(r.output.find("killing "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("mpirun exited with 0"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("mpirun exited with 124"), std::string::npos) << "it hung\n" << r.output;
+  EXPECT_NE(r.output.find("signal 9"), std::string::npos) << r.output;
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(out / "frames")) {
+    if (entry.path().extension() != ".vtp") continue;
+    ++frames;
+    EXPECT_NO_THROW(render::read_vtp(entry.path())) << entry.path();
+  }
+  EXPECT_GE(frames, 3);
 }
 
 // A split run's checkpoint is a one-rank checkpoint: written at 4 ranks, resumed at 2, the run
