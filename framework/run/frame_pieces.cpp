@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numeric>
 
+#include "framework/output/atomic_file.h"
 #include "framework/output/vtp_writer.h"
 #include "framework/particles/particles_of_types.h"
 
@@ -41,6 +42,7 @@ FramePieces::FramePieces(const std::filesystem::path& out_dir, const SceneDescri
                     world.count(ParticleType::Frozen) > 0),
       frozen_written_(resuming && std::filesystem::exists(out_dir / "frames" / "frozen.pvtp")),
       domain_(*world.domain()) {
+  ensure_directory(out_dir / "frames");  // on every rank: rank 0's may not be there yet
   frame_types_ = frozen_piece_ ? TypeMask(scene.output.vtp_types & ~mask_of(ParticleType::Frozen))
                                : scene.output.vtp_types;
 }
@@ -65,6 +67,8 @@ std::string FramePieces::write_pieces(const Particles& owned, TypeMask types,
   const auto compression = compress_ ? vtk_xml::Compression::zlib : vtk_xml::Compression::none;
   write_vtp(out_dir_ / "frames" / piece_file(name, domain_.rank()), piece, fields_, compression);
   const std::string pvtp = "frames/" + name + ".pvtp";
+  // Every piece is on disk before the file that names them: a collective, as a barrier.
+  (void)domain_.max(0.0);
   if (domain_.rank() == 0) {
     std::vector<std::string> sources;
     for (int r = 0; r < domain_.ranks(); ++r) sources.push_back(piece_file(name, r));
