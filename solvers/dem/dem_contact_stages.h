@@ -55,7 +55,8 @@ struct DemCandidateSources {
     const bool ghost = i >= owned_end;
     const Vec3 xi = x[i];
     const Real reach = radius[i] + skin;
-    for (std::uint32_t b = 0; b < (ghost ? 0u : box_count); ++b) {
+    const std::uint32_t boxes_near = ghost ? 0u : box_count;  // a ghost's walls are its owner's
+    for (std::uint32_t b = 0; b < boxes_near; ++b) {
       const ContainerBox& box = boxes[b];
       bool near = true;
       for (int a = 0; a < 3; ++a)

@@ -86,8 +86,10 @@ void DemContactList::set_records(std::vector<DemSpringRecord> records) {
 void DemContactList::follow_migration(const ParticleDomain& domain) {
   const Destinations to(domain.departed());
   std::vector<std::vector<std::uint8_t>> sends(domain.departed().size());
-  std::vector<DemSpringRecord> mine = records();
-  if (!to.empty())
+  // The records are listed only when something moved: most steps, on most ranks, nothing does.
+  std::vector<DemSpringRecord> mine;
+  if (!to.empty()) {
+    mine = records();
     for (const DemSpringRecord& r : mine) {
       // The holder's new rank computes the pair; so does the partner's (wall keys are no ids).
       const int holder_rank = to(r.holder);
@@ -96,9 +98,11 @@ void DemContactList::follow_migration(const ParticleDomain& domain) {
       if (partner_rank >= 0 && partner_rank != holder_rank)
         append_record(sends[std::size_t(partner_rank)], r);
     }
+  }
   // Every rank takes part, whether or not it sends anything.
   const std::vector<std::uint8_t> arrived = domain.exchange_bytes(sends);
   if (arrived.empty()) return;
+  if (to.empty()) mine = records();
   append_records(arrived, mine);
   set_records(std::move(mine));
 }
