@@ -26,7 +26,7 @@ test: build
 
 asan: deps
 	cmake --preset asan
-	cmake --build --preset asan -j $(JOBS) --target upf_unit_tests upf_surface_tests fuzz_scene fuzz_mesh
+	cmake --build --preset asan -j $(JOBS) --target upf_unit_tests upf_surface_tests fuzz_scene fuzz_mesh fuzz_checkpoint
 	ctest --preset asan -j $(JOBS)
 
 bench: build

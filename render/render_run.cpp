@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
@@ -14,6 +15,7 @@
 #include "framework/core/child_process.h"
 #include "framework/core/errors.h"
 #include "framework/output/atomic_file.h"
+#include "framework/run/run_manifest.h"
 #include "framework/scene/json_input.h"
 #include "render/frame_picture.h"
 #include "render/run_frames.h"
@@ -73,7 +75,7 @@ bool on_path(const std::string& program) {
 RenderOutcome render_run(const RenderRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   SceneFacts facts =
-      read_scene_facts(request.run_dir / "scene.json", run_directory_name(request.run_dir));
+      read_scene_facts(scene_record(request.run_dir), run_directory_name(request.run_dir));
   RenderSettings settings = facts.settings;
   const RenderOverrides& o = request.overrides;
   if (o.width) settings.width = *o.width;
@@ -125,8 +127,19 @@ RenderOutcome render_run(const RenderRequest& request) {
         camera_for_particles(first.particles, facts.up, double(settings.width) / settings.height);
   }
 
+  // The pictures are recorded like the run's files (run_manifest.h): into RUN_DIR/render in the
+  // run's manifest, or into a folder of their own with its own manifest.
   const fs::path out_dir = request.out_dir.empty() ? request.run_dir / "render" : request.out_dir;
-  ensure_directory(out_dir);
+  std::optional<RunManifest> manifest;
+  std::string prefix;
+  if (request.out_dir.empty()) {
+    manifest.emplace(RunManifest::for_continued_run(request.run_dir));
+    manifest->claim_directory("render");
+    prefix = "render/";
+  } else {
+    manifest.emplace(RunManifest::for_new_run(out_dir, false));
+    manifest->clear_previous();
+  }
   RenderOutcome outcome;
   outcome.color_by = settings.color_by;
   if (context.scale) outcome.range = std::array<double, 2>{context.scale->low, context.scale->high};
@@ -135,6 +148,7 @@ RenderOutcome render_run(const RenderRequest& request) {
     const FrameData data = k == 0 ? first : read_frame(frames[k]);
     char name[64];
     std::snprintf(name, sizeof name, "frame_%05d.png", request.first_frame + int(k));
+    manifest->claim(prefix + name);
     write_png(out_dir / name, draw_frame(data, context));
     outcome.pictures.push_back(out_dir / name);
     if (request.on_frame) request.on_frame(int(k) + 1, int(frames.size()));
@@ -152,6 +166,7 @@ RenderOutcome render_run(const RenderRequest& request) {
       const double span = frames.back().time - frames.front().time;
       fps = span > 0 ? double(frames.size() - 1) / span : 30;
     }
+    manifest->claim({prefix + facts.name + ".mp4", prefix + "ffmpeg.log"});
     const fs::path video = out_dir / (facts.name + ".mp4");
     const fs::path partial = out_dir / (facts.name + ".mp4.tmp");
     char rate[32];

@@ -5,11 +5,19 @@
 #include <vector>
 
 #include "framework/core/errors.h"
+#include "framework/core/file_name.h"
+#include "framework/run/run_manifest.h"
 #include "framework/scene/json_input.h"
 
 namespace upf::render {
 
 namespace fs = std::filesystem;
+
+fs::path scene_record(const fs::path& run_dir) {
+  std::error_code ec;
+  const fs::path record = run_dir / kSceneRecordFile;
+  return fs::exists(record, ec) ? record : run_dir / "scene.json";
+}
 
 std::string run_directory_name(const fs::path& run_dir) {
   std::string name = fs::absolute(run_dir).lexically_normal().filename().string();
@@ -20,13 +28,15 @@ std::string run_directory_name(const fs::path& run_dir) {
 
 SceneFacts read_scene_facts(const fs::path& json_file, std::string fallback_name) {
   SceneFacts facts;
-  facts.name = std::move(fallback_name);
+  facts.name = file_name_problem(fallback_name) ? std::string("run") : std::move(fallback_name);
   std::ifstream in(json_file);
   if (!in) return facts;  // an older run: defaults
   const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
   if (doc.is_discarded() || !doc.is_object())
     throw InputError(json_file.string(), "not a JSON object");
-  if (auto n = doc.find("name"); n != doc.end() && n->is_string()) facts.name = *n;
+  if (auto n = doc.find("name");
+      n != doc.end() && n->is_string() && !file_name_problem(n->get<std::string>()))
+    facts.name = *n;
   if (auto s = doc.find("particle_spacing"); s != doc.end() && s->is_number() && *s > 0)
     facts.spacing = s->get<double>();
   if (auto g = doc.find("gravity"); g != doc.end() && g->is_array() && g->size() == 3) {

@@ -1,4 +1,4 @@
-// What pictures need from a scene file (or a run's copy of it, RUN_DIR/scene.json): its name,
+// What pictures need from a scene file (or a run's copy of it, RUN_DIR/upf_scene.json): its name,
 // particle spacing, vertical (opposite to gravity), frame rate and "render" section. Shared by
 // `upf render` and `upf view`.
 #pragma once
@@ -20,11 +20,16 @@ struct SceneFacts {
   RenderSettings settings;
 };
 
-// Reads `json_file`; a missing file gives the defaults named `fallback_name`. Throws InputError
+// Reads `json_file`; a missing file gives the defaults named `fallback_name`, and so does a name
+// that cannot be a file name (file_name.h: the name names the video). Throws InputError
 // for a file that is not a JSON object or has a bad "render" section.
 SceneFacts read_scene_facts(const std::filesystem::path& json_file, std::string fallback_name);
 
-// A run's name when it has no scene.json: its directory's name.
+// The run's record of its scene: RUN_DIR/upf_scene.json, or scene.json in runs made before it
+// had a name of its own.
+std::filesystem::path scene_record(const std::filesystem::path& run_dir);
+
+// A run's name when it has no scene record: its directory's name.
 std::string run_directory_name(const std::filesystem::path& run_dir);
 
 }  // namespace upf::render

@@ -16,7 +16,7 @@ or inside Blender, run this file in the Text Editor after setting RUN_DIR below,
     import blender_upf; blender_upf.load_run("/path/to/out/dam_break")
 
 Blender frame f shows upf frame f (frame 0 is the initial state); the scene's frame range and
-frame rate are set to the run's (scene.json's /output/fps). Format of the files read: G. Turk's
+frame rate are set to the run's (upf_scene.json's /output/fps). Format of the files read: G. Turk's
 PLY as upf writes it (framework/output/ply_points_writer.h): binary little endian, one "vertex"
 element, no faces.
 """
@@ -162,9 +162,13 @@ def _points_modifier(obj, radius):
 
 
 def _run_settings(run_dir):
-    """(fps, spacing) from the run's scene.json; (30, 0.02) when it is missing."""
+    """(fps, spacing) from the run's upf_scene.json (scene.json in older runs); (30, 0.02) when it
+    is missing."""
+    record = os.path.join(run_dir, "upf_scene.json")
+    if not os.path.exists(record):
+        record = os.path.join(run_dir, "scene.json")
     try:
-        with open(os.path.join(run_dir, "scene.json")) as f:
+        with open(record) as f:
             scene = json.load(f)
         return (float(scene.get("output", {}).get("fps", 30)),
                 float(scene.get("particle_spacing", 0.02)))

@@ -16,7 +16,8 @@ namespace upf::viewer {
 namespace fs = std::filesystem;
 
 RunFrames::RunFrames(const fs::path& run_dir) : frames_(render::read_run_frames(run_dir)) {
-  facts_ = render::read_scene_facts(run_dir / "scene.json", render::run_directory_name(run_dir));
+  facts_ =
+      render::read_scene_facts(render::scene_record(run_dir), render::run_directory_name(run_dir));
   show(0);
 }
 

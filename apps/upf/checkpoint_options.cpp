@@ -1,6 +1,7 @@
 #include "checkpoint_options.h"
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "framework/core/errors.h"
@@ -33,8 +34,16 @@ CheckpointPolicy parse_checkpoint_every(const std::string& text) {
   } else {
     throw InputError("--checkpoint-every", forms);
   }
-  if (!std::isfinite(policy.every) || policy.every <= 0)
-    throw InputError("--checkpoint-every", "must be a positive duration, got '" + text + "'");
+  // A tiny interval would checkpoint at every step (or, before the schedule computed its next
+  // time, spin for ever adding 1e-300 to it); a huge one is a typo. Wall-clock checkpoints
+  // cost seconds of writing, so no closer than 1 s; simulated ones no closer than 1 us.
+  const double lo = policy.wall_clock ? kMinWallClockEvery : kMinSimulatedEvery;
+  if (!std::isfinite(policy.every) || policy.every < lo || policy.every > kMaxCheckpointEvery) {
+    char range[160];
+    std::snprintf(range, sizeof range, "%s intervals from %g s to %g s",
+                  policy.wall_clock ? "wall-clock" : "simulated", lo, kMaxCheckpointEvery);
+    throw InputError("--checkpoint-every", "'" + text + "' is outside the allowed range: " + range);
+  }
   return policy;
 }
 

@@ -10,8 +10,13 @@
 
 namespace upf::app {
 
+// The intervals --checkpoint-every allows, in seconds (wall-clock or simulated).
+inline constexpr double kMinWallClockEvery = 1;
+inline constexpr double kMinSimulatedEvery = 1e-6;
+inline constexpr double kMaxCheckpointEvery = 1e9;
+
 // "300s", "5m", "2h": wall-clock time; "0.5sim": simulated seconds. Throws InputError naming
-// --checkpoint-every and the forms it takes.
+// --checkpoint-every and the forms it takes, or the allowed range above.
 CheckpointPolicy parse_checkpoint_every(const std::string& text);
 
 struct ResumableRun {

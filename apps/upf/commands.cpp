@@ -26,6 +26,7 @@
 #include "framework/scene/solver_override.h"
 #include "framework/solver/registry.h"
 #include "interrupt_signal.h"
+#include "option_checks.h"
 #include "output_estimate_report.h"
 #include "progress.h"
 #ifdef UPF_HAS_MPI
@@ -101,6 +102,7 @@ int run_command(const RunArgs& args) {
   options.scene_text = run.scene_text;
   options.surface_mesher = run_surface_mesher;
   options.resume = !args.resume.empty();
+  options.overwrite = args.overwrite;
   // Not kept in the checkpoint: every device gives the same bits, so a run may resume on another.
   const std::string device = args.device.value_or(scene.device);
   const std::string device_where =
@@ -238,16 +240,22 @@ ComparisonRuns comparison_runs(const CompareArgs& args, const Registry& registry
       args.solvers_given ? args.solvers : solvers_for_scene(base, registry);
   std::vector<SweepAxis> axes;
   for (const auto& v : args.vary) axes.push_back(parse_sweep_axis(v));
+  check_sweep_axes(axes);
   warn_unreached_sweeps(c.document, axes, solvers);
+  std::vector<std::string> names;
   for (const auto& sets : sweep_combinations(axes)) {
     const SceneDescription scene =
         sets.empty() ? base : read_scene(with_sets(c.document, sets), registry, args.scene);
     for (SolverRunPlan& run : plan_comparison(scene, registry, solvers)) {
       run.name = sweep_run_name(run.solver, axes, sets);
+      names.push_back(run.name);
       c.planned.push_back({run.name, run.solver, sets});
       c.runs.push_back(std::move(run));
     }
   }
+  // The names are folders under --out: one plain name each, no two alike (a value with a control
+  // character, or too long a name, is caught here).
+  check_run_names(names, args.vary.empty() ? "--solvers" : "--vary");
   return c;
 }
 
@@ -268,6 +276,12 @@ std::vector<SolverRunPlan> planned_runs(const ComparePlanFile& plan,
 }
 
 CompareOptions split_options(const ComparePlanFile& plan, const CompareArgs& args) {
+  // --threads is checked by the command line; the plan's own count comes from a file.
+  if (plan.threads < 0 || plan.threads > kMaxThreads)
+    throw InputError(
+        (std::filesystem::path(args.out_dir) / kComparePlanFile).string() + ":/threads",
+        std::to_string(plan.threads) + " threads: allowed 0 (all) to " +
+            std::to_string(kMaxThreads));
   CompareOptions options;
   options.out_dir = args.out_dir;
   options.surface_mesher = run_surface_mesher;
@@ -432,7 +446,11 @@ int validate_command(const std::vector<std::string>& files, const std::vector<st
         const auto world = build_world(scene, registry, 0);
         world->prepare();
         if (scene.output.fields) check_output_fields(scene, world->particles());
-        check_device(scene.device, *world, scene.source.string() + ":/device");
+        const std::string device_where = scene.source.string() + ":/device";
+        check_device(scene.device, *world, device_where);
+        // check_device knows the names and the solvers, not whether this machine has a usable
+        // GPU: `upf run` would stop there, so validate asks as it does (and drops the pipeline).
+        if (scene.device == "cuda") make_device_pipeline(scene.device, *world, device_where);
       }
       std::printf("%s: ok (%.0f particles)\n", f.c_str(), scene.estimated_particles());
     } catch (const InputError& e) {

@@ -16,6 +16,9 @@ struct RunArgs {
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;
+  // Write into a folder that holds files no upf run recorded (run_manifest.h): the files at the
+  // names this run writes are replaced, nothing else is touched.
+  bool overwrite = false;
   std::string solver;                 // empty: the scene's own solvers
   std::string checkpoint_every;       // empty: checkpoints only on Ctrl-C
   std::string resume;                 // a run directory to continue; then scene is empty

@@ -24,6 +24,7 @@
 #include "help_format.h"
 #include "info_command.h"
 #include "mpi_launch.h"
+#include "option_checks.h"
 #ifdef UPF_HAS_MPI
 #include "mpi_run.h"
 #endif
@@ -35,9 +36,9 @@ namespace {
 void add_run_controls(CLI::App& command, int& threads, std::optional<double>& end_time, bool& quiet,
                       bool& no_frames) {
   command.add_option("--threads,-j", threads, "CPU threads (default: all)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, upf::app::kMaxThreads));
   command.add_option("--end", end_time, "end time in seconds, overriding the scene's")
-      ->check(CLI::PositiveNumber);
+      ->check(upf::app::end_time_check());
   command.add_flag("--quiet,-q", quiet, "no progress output");
   command.add_flag("--no-frames", no_frames, "write metrics and probes only");
 }
@@ -66,13 +67,23 @@ Examples:
   upf run samples/dam_break.json --device cuda       on a GPU (omp: the same pipeline on the CPU)
   mpirun -n 4 upf run samples/dam_break.json         split over 4 MPI ranks (docs/mpi.md)
 
-A new run into a directory that holds an earlier run replaces that run's files.
+A new run into a directory that holds an earlier run removes the files that run wrote (its
+upf_manifest.txt lists them) and nothing else. A non-empty directory without a manifest is
+refused unless --overwrite is given. Symbolic links inside it are never followed.
 Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame written),
 130 interrupted by Ctrl-C (checkpoint written; --resume continues).)");
   auto* scene_option = run->add_option("scene", run_args.scene, "scene file (JSON)");
   auto* out_option =
-      run->add_option("--out,-o", run_args.out_dir, "output directory (default out/<scene name>)");
+      run->add_option("--out,-o", run_args.out_dir, "output directory (default out/<scene name>)")
+          ->check(upf::app::non_empty_dir_check());
   add_run_controls(*run, run_args.threads, run_args.end_time, run_args.quiet, run_args.no_frames);
+  auto* overwrite_option = run->add_flag(
+      "--overwrite", run_args.overwrite,
+      "write into a non-empty directory that no upf run recorded (no upf_manifest.txt): the "
+      "files there at the names this run writes (particles.pvd, metrics.csv, probes.csv, "
+      "summary.json, upf_scene.json, bodies.csv, body_forces.csv, dem_*_walls.csv, "
+      "checkpoint.upfck, frames/frame_NNNNN.*, frames/surface_NNNNN.*, frames/bodies_NNNNN.vtp, "
+      "frames/frozen.*) are replaced; nothing else is deleted");
   auto* solver_option =
       run->add_option("--solver", run_args.solver,
                       "move every material of the solver's particle type with this solver");
@@ -84,13 +95,14 @@ Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame wri
       run->add_option(
              "--set", run_args.sets,
              "override a scene value by JSON pointer, checked like the file and kept in the run's "
-             "scene.json: --set /materials/water/viscosity=0.01 (repeatable)")
+             "upf_scene.json: --set /materials/water/viscosity=0.01 (repeatable)")
           ->allow_extra_args(false);
   run->add_option("--resume", run_args.resume,
                   "continue the run in this output directory from its checkpoint, with the scene "
                   "and options it was started with (--end may move its end)")
       ->excludes(scene_option)
       ->excludes(out_option)
+      ->excludes(overwrite_option)
       ->excludes(solver_option)
       ->excludes(every_option)
       ->excludes(set_option);
@@ -116,11 +128,12 @@ Examples:
 
 Exit codes: 0 ok, 1 output failure, 2 bad input (no run there, unknown field).)");
   render->add_option("run_dir", render_args.run_dir, "the run's output directory")->required();
-  render->add_option("--out,-o", render_args.out_dir, "picture directory (default RUN_DIR/render)");
+  render->add_option("--out,-o", render_args.out_dir, "picture directory (default RUN_DIR/render)")
+      ->check(upf::app::non_empty_dir_check());
   render->add_option("--frames", render_args.frames,
                      "frame N, or frames A:B (either may be empty)");
   render->add_option("--threads,-j", render_args.threads, "CPU threads (default: all)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, upf::app::kMaxThreads));
   render->add_flag("--quiet,-q", render_args.quiet, "no progress output");
   add_render_options(*render, render_args);
 
@@ -147,7 +160,8 @@ Exit codes: 0 ok (an unstable solver gets its row), 1 plots missing, 2 bad input
                        "comma-separated solver names (default: every registered solver the "
                        "scene has particles for)")
           ->delimiter(',');
-  compare->add_option("--out,-o", compare_args.out_dir, "output directory (default out/compare)");
+  compare->add_option("--out,-o", compare_args.out_dir, "output directory (default out/compare)")
+      ->check(upf::app::non_empty_dir_check());
   add_run_controls(*compare, compare_args.threads, compare_args.end_time, compare_args.quiet,
                    compare_args.no_frames);
   compare->add_option("--plot-script", compare_args.plot_script,
@@ -183,7 +197,7 @@ Exit codes: 0 ok, 1 no display or OpenGL, 2 bad input.)");
       ->required();
   view->add_option("--size", view_options.size, "window size WIDTHxHEIGHT (default 1280x720)");
   view->add_option("--threads,-j", view_options.threads, "CPU threads (default: all)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, upf::app::kMaxThreads));
   view->add_option("--screenshot", view_options.screenshot,
                    "write the window's pixels to this PNG after --exit-after frames, then exit");
   view->add_option("--exit-after", view_options.exit_after,

@@ -3,9 +3,28 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace upf::app {
+
+namespace {
+// Seconds for the progress line: whole seconds while they are few, else 3 significant digits
+// (%g), so an ETA from a tiny step or a huge end stays short instead of printing 300 digits.
+std::string seconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, s < 1e6 ? "%.0f" : "%.3g", s);
+  return text;
+}
+// Simulated times: 3 decimals, unless far from 1 s either way.
+std::string sim_time(double t) {
+  char text[32];
+  const double a = std::abs(t);
+  std::snprintf(text, sizeof text, a == 0 || (a >= 1e-3 && a < 1e6) ? "%.3f" : "%.3g", t);
+  return text;
+}
+}  // namespace
 
 ProgressReporter::ProgressReporter(std::FILE* stream)
     : stream_(stream), terminal_(isatty(fileno(stream)) != 0) {}
@@ -24,12 +43,13 @@ void ProgressReporter::update(const RunProgress& p) {
     const int filled = int(fraction * kWidth);
     std::string bar(std::size_t(filled), '#');
     bar.resize(kWidth, '-');
-    std::fprintf(stream_, "\r[%s] t = %.3f / %.3f s  %6.1f steps/s  ETA %5.0f s ", bar.c_str(),
-                 p.time, p.end_time, steps_per_s, eta);
+    std::fprintf(stream_, "\r[%s] t = %s / %s s  %6.1f steps/s  ETA %5s s ", bar.c_str(),
+                 sim_time(p.time).c_str(), sim_time(p.end_time).c_str(), steps_per_s,
+                 seconds(eta).c_str());
   } else {
-    std::fprintf(stream_, "t = %.3f / %.3f s (%3.0f%%), %llu steps, %.1f steps/s, ETA %.0f s\n",
-                 p.time, p.end_time, 100.0 * fraction, static_cast<unsigned long long>(p.steps),
-                 steps_per_s, eta);
+    std::fprintf(stream_, "t = %s / %s s (%3.0f%%), %llu steps, %.1f steps/s, ETA %s s\n",
+                 sim_time(p.time).c_str(), sim_time(p.end_time).c_str(), 100.0 * fraction,
+                 static_cast<unsigned long long>(p.steps), steps_per_s, seconds(eta).c_str());
   }
   std::fflush(stream_);
   printed_ = true;

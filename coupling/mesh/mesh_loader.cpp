@@ -1,5 +1,6 @@
 #include "coupling/mesh/mesh_loader.h"
 
+#include "coupling/mesh/declared_counts.h"
 #include "coupling/mesh/isolated_read.h"
 
 #include <assimp/config.h>
@@ -176,6 +177,8 @@ TriangleMesh load_mesh(const std::filesystem::path& file, const MeshTransform& t
   require_valid_transform(transform, where.empty() ? file.string() : where);
   require_readable_file(file, where);
   require_supported_format(Assimp::Importer(), file, where);
+  // Before assimp allocates for counts the file cannot hold (declared_counts.h).
+  require_counts_fit(file, where);
   // assimp in a child process: it aborts on some malformed files (isolated_read.h).
   TriangleMesh mesh = read_isolated(
       [&] {

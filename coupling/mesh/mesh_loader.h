@@ -18,7 +18,8 @@ namespace upf {
 
 // Throws InputError at `where` (the JSON path that names the file, e.g. "/bodies/0/mesh"; empty:
 // the file itself), its message naming the file, when: the file is missing, not a regular file
-// or empty; its format is not supported; assimp fails to read it (assimp's message is quoted);
+// or empty; its format is not supported; its header declares more vertices or faces than the
+// file holds (PLY, OFF: declared_counts.h); assimp fails to read it (assimp's message is quoted);
 // it has no triangles; a vertex is not finite; every triangle has zero area; the transform is
 // invalid. Never aborts on a bad file.
 TriangleMesh load_mesh(const std::filesystem::path& file, const MeshTransform& transform = {},

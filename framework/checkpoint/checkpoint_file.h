@@ -17,8 +17,9 @@
 
 namespace upf {
 
-// 2: bodies keep their frame-mean forces; 3: the solvers' tables (DEM wall forces)
-inline constexpr std::uint32_t kCheckpointFormat = 3;
+// 2: bodies keep their frame-mean forces; 3: the solvers' tables (DEM wall forces); 4: the
+// scene's identity after the caller's header (simulation_run.cpp)
+inline constexpr std::uint32_t kCheckpointFormat = 4;
 inline constexpr const char* kCheckpointFileName = "checkpoint.upfck";
 
 // "upf 0.1.0, Real float": runs resume only in the build flavour that wrote them.
@@ -26,7 +27,8 @@ std::string checkpoint_build_id();
 
 // Throws OutputError when it cannot be written (the previous checkpoint stays).
 void write_checkpoint(const std::filesystem::path& path, const std::vector<char>& payload);
-// The payload, checked; throws InputError (file missing, other format or build, damaged).
+// The payload, checked; throws InputError (file missing or not a regular file, other format or
+// build, damaged). Reads nothing beyond what the file's size and header allow.
 StateReader read_checkpoint(const std::filesystem::path& path);
 
 }  // namespace upf

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "framework/core/errors.h"
+#include "framework/core/file_name.h"
 #include "framework/output/atomic_file.h"
 
 namespace upf {
@@ -74,9 +75,20 @@ ComparePlanFile read_compare_plan(const std::filesystem::path& out_dir) {
   plan.scene = j.at("scene");
   const nlohmann::json runs = field<nlohmann::json>(j, "runs", path);
   if (!runs.is_array()) throw InputError(path.string() + ":/runs", "not an array of runs");
-  for (const auto& r : runs)
+  for (const auto& r : runs) {
     plan.runs.push_back({field<std::string>(r, "name", path), field<std::string>(r, "solver", path),
                          field<std::vector<std::string>>(r, "set", path)});
+    // The name becomes the run's folder under OUT/: a hand-edited "../x" or "/tmp/x" must not
+    // send a task's files outside it, nor two tasks into one folder.
+    const std::string& name = plan.runs.back().name;
+    const std::string where =
+        path.string() + ":/runs/" + std::to_string(plan.runs.size() - 1) + "/name";
+    check_file_name(name, where);
+    for (std::size_t k = 0; k + 1 < plan.runs.size(); ++k)
+      if (plan.runs[k].name == name)
+        throw InputError(where, "'" + name + "' is also the name of run " + std::to_string(k) +
+                                    ": the two would share a folder");
+  }
   if (!j.contains("end_time_s") || !j["end_time_s"].is_null())
     plan.end_time = field<double>(j, "end_time_s", path);
   plan.threads = field<int>(j, "threads", path);

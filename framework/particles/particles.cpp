@@ -269,6 +269,22 @@ void restore_fields(StateReader& in, std::map<std::string, Field<T>>& fields, st
 
 }  // namespace
 
+void Particles::swap_values(Particles& other) {
+  for_each_builtin([](auto& mine, auto& theirs) { mine.swap(theirs); }, *this, other);
+  auto swap_fields = [](auto& mine, auto& theirs) {
+    for (auto& [name, field] : mine) {
+      auto it = theirs.find(name);
+      if (it == theirs.end()) throw std::logic_error("Particles::swap_values: no field " + name);
+      field.values.swap(it->second.values);
+      std::swap(field.exported, it->second.exported);
+    }
+  };
+  swap_fields(scalars_, other.scalars_);
+  swap_fields(vectors_, other.vectors_);
+  std::swap(next_id_, other.next_id_);
+  std::swap(ghosts_, other.ghosts_);
+}
+
 void Particles::save_state(StateWriter& out) const {
   out.section("particles");
   out.put(next_id_);
@@ -279,9 +295,11 @@ void Particles::save_state(StateWriter& out) const {
 
 void Particles::restore_state(StateReader& in) {
   in.section("particles");
+  // Emitters hand out ids after the scene's: the count only grows from the scene's own.
   const auto next_id = in.get<ParticleId>();
-  in.expect(next_id == next_id_, "the particle id count (" + std::to_string(next_id) + " saved, " +
-                                     std::to_string(next_id_) + " here)");
+  in.expect(next_id >= next_id_, "the particle id count (" + std::to_string(next_id) +
+                                     " saved, at least " + std::to_string(next_id_) + " here)");
+  next_id_ = next_id;
   for_each_builtin([&in](auto& values) { in.get_vector(values); }, *this);
   const std::size_t n = position.size();
   bool sizes = true;

@@ -121,6 +121,11 @@ class Particles {
   // Largest stable id handed out so far plus one.
   ParticleId id_bound() const { return next_id_; }
 
+  // Exchanges every array and field's values with `other`, a copy of this Particles (the same
+  // fields): a state read and checked aside becomes this one while the field handles, which point
+  // into this object, stay valid.
+  void swap_values(Particles& other);
+
   // Checkpoints: every array, every field but the scratch ones, and the id counter. restore_state
   // expects the fields this world's solvers made (same names): anything else is another run.
   void save_state(StateWriter& out) const;

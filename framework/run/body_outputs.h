@@ -27,6 +27,8 @@ class BodyOutputs {
   // After each step of length `dt` ending at `time`: adds the step's force to the frame means,
   // and with `row` writes its row of body_forces.csv.
   void record_step(double time, double dt, bool row);
+  // Whether write_frame writes frames/bodies_NNNNN.vtp.
+  bool writes_meshes() const { return write_meshes_; }
   // The files written for frame `frame` (relative to the output directory), for the .pvd.
   std::vector<std::string> write_frame(int frame, double time);
   void save_state(StateWriter& out);

@@ -47,9 +47,27 @@ FramePieces::FramePieces(const std::filesystem::path& out_dir, const SceneDescri
                                : scene.output.vtp_types;
 }
 
-FramePieceNames FramePieces::write(const Particles& owned, int frame) {
+namespace {
+std::string frame_name(int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05d", frame);
+  return name;
+}
+}  // namespace
+
+std::vector<std::string> FramePieces::files_of_frame(int frame) const {
+  std::vector<std::string> files;
+  auto add = [&](const std::string& name) {
+    for (int r = 0; r < domain_.ranks(); ++r) files.push_back("frames/" + piece_file(name, r));
+    files.push_back("frames/" + name + ".pvtp");
+  };
+  add(frame_name(frame));
+  if (frozen_piece_ && !frozen_written_) add(kFrozenName);
+  return files;
+}
+
+FramePieceNames FramePieces::write(const Particles& owned, int frame) {
+  const std::string name = frame_name(frame);
   FramePieceNames names;
   names.particles = write_pieces(owned, frame_types_, name);
   if (frozen_piece_) {

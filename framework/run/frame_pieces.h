@@ -29,6 +29,9 @@ class FramePieces {
   FramePieces(const std::filesystem::path& out_dir, const SceneDescription& scene,
               std::vector<std::string> fields, const World& world, bool resuming);
 
+  // The files write() makes for frame `frame` on every rank together (the pieces, the .pvtp,
+  // and the frozen ones the first time), for rank 0's manifest to record first.
+  std::vector<std::string> files_of_frame(int frame) const;
   // Every rank calls it with its own particles (no ghosts) for frame number `frame`.
   FramePieceNames write(const Particles& owned, int frame);
 

@@ -70,6 +70,20 @@ void with_types(const Particles& particles, TypeMask types, Write&& write) {
 
 }  // namespace
 
+std::vector<std::string> FrameWriter::files_of_frame(const FramePieceNames& pieces) const {
+  std::vector<std::string> files;
+  const bool as_pieces = !pieces.particles.empty();
+  if (vtp_ && !as_pieces) files.push_back(frame_file("frames/frame_%05d.vtp", frames_));
+  if (frozen_piece_ && !as_pieces && !frozen_written_) files.push_back(kFrozenFile);
+  if (ply_) files.push_back(frame_file("frames/frame_%05d.ply", frames_));
+  if (bodies_.writes_meshes()) files.push_back(frame_file("frames/bodies_%05d.vtp", frames_));
+  if (surface_) {
+    files.push_back(frame_file("frames/surface_%05d.ply", frames_));
+    files.push_back(frame_file("frames/surface_%05d.vtp", frames_));
+  }
+  return files;
+}
+
 void FrameWriter::write(const Particles& particles, double time, const FramePieceNames& pieces) {
   std::vector<std::string> files;
   if (vtp_ && !pieces.particles.empty()) {

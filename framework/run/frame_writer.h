@@ -42,6 +42,9 @@ class FrameWriter {
   // `pieces`: the .vtp frame (and the frozen piece) went out as pieces per rank (frame_pieces.h):
   // the series lists those files instead.
   void write(const Particles& particles, double time, const FramePieceNames& pieces = {});
+  // The files the next write() makes (relative to the output directory), for the run's
+  // manifest to record first; `pieces`: as write() gets them (the pieces are the caller's).
+  std::vector<std::string> files_of_frame(const FramePieceNames& pieces) const;
   // Whether write() reads `particles` beyond what went out as pieces (PLY, surfaces).
   bool reads_particles_beside_pieces() const { return ply_ || surface_; }
   // The bytes write() puts on disk per frame for `particles` uncompressed (particle files only:

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 #include "framework/checkpoint/checkpoint_file.h"
@@ -12,7 +14,7 @@
 #include "framework/run/metrics_log.h"
 #include "framework/run/output_fields.h"
 #include "framework/run/probes.h"
-#include "framework/run/run_directory.h"
+#include "framework/run/run_manifest.h"
 #include "framework/run/run_totals.h"
 #include "framework/run/solver_tables.h"
 #include "framework/scene/scene_builder.h"
@@ -25,6 +27,38 @@ namespace {
 std::string read_header(StateReader& in) {
   in.section("header");
   return in.get_string();
+}
+
+// What names the scene in a checkpoint: FNV-1a 64 of the scene's text as the run was given it.
+std::uint64_t scene_identity(const std::string& scene_text) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (const char c : scene_text) {
+    h ^= std::uint8_t(c);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+// After the header: the scene's identity, checked before the world is touched.
+void read_scene_identity(StateReader& in, const std::string& scene_text) {
+  in.section("scene");
+  in.expect(in.get<std::uint64_t>() == scene_identity(scene_text), "the scene's text");
+}
+
+// A resumed run continues the run recorded in its folder: a checkpoint of another scene (copied
+// there, or a folder reused) would splice two runs' files together.
+void check_folder_records_scene(const std::filesystem::path& dir, const std::string& scene_text) {
+  const auto record = dir / kSceneRecordFile;
+  std::error_code ec;
+  if (scene_text.empty() || !std::filesystem::is_regular_file(record, ec)) return;
+  std::ifstream in(record, std::ios::binary);
+  const std::string recorded((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+  if (recorded != scene_text)
+    throw InputError((dir / kCheckpointFileName).string(),
+                     "is a checkpoint of another scene than the run recorded in this folder (" +
+                         record.string() +
+                         " differs from the checkpoint's scene): resuming would mix two runs");
 }
 
 std::vector<std::string> probe_names(const SceneDescription& scene) {
@@ -84,11 +118,12 @@ class RunRecorder {
  public:
   RunRecorder(const SceneDescription& scene, const RunOptions& options, const World& world,
               std::vector<std::string> fields, std::size_t frozen_count, RunResult& result,
-              FrameClock& clock)
+              FrameClock& clock, RunManifest& manifest)
       : scene_(scene),
         world_(world),
         result_(result),
         clock_(clock),
+        manifest_(manifest),
         out_dir_(options.out_dir),
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
                 frozen_count, options.surface_mesher, options.resume),
@@ -99,6 +134,7 @@ class RunRecorder {
   // A frame of `state` (the world's particles, or its last good state) at `time`; `pieces`: the
   // .vtp frame went out as pieces per rank.
   void frame(const Particles& state, double time, const FramePieceNames& pieces = {}) {
+    manifest_.claim(frames_.files_of_frame(pieces));
     frames_.write(state, time, pieces);
     sample_probes(state, time);
     metrics_.flush();
@@ -178,6 +214,7 @@ class RunRecorder {
   const World& world_;
   RunResult& result_;
   FrameClock& clock_;
+  RunManifest& manifest_;
   std::filesystem::path out_dir_;
   FrameWriter frames_;
   MetricsLog metrics_;
@@ -201,7 +238,15 @@ class CheckpointSchedule {
     if (policy_.every <= 0) return false;
     const double now = policy_.wall_clock ? wall_seconds : simulated_time;
     if (now < next_ - 1e-12) return false;
-    while (next_ <= now + 1e-12) next_ += policy_.every;
+    // The first multiple of `every` after now, computed: stepping to it by additions took
+    // now / every of them (for ever at 1e-300 s, deaf to Ctrl-C between steps). One more
+    // multiple when the division rounded down onto now; and when `every` is too small to move
+    // past now at all, the next step is due.
+    const double after = now + 1e-12;
+    const double k = std::floor(after / policy_.every) + 1;
+    next_ = k * policy_.every;
+    if (!(next_ > after)) next_ = (k + 1) * policy_.every;
+    if (!(next_ > after) || !std::isfinite(next_)) next_ = std::nextafter(after, HUGE_VAL);
     return true;
   }
 
@@ -209,6 +254,16 @@ class CheckpointSchedule {
   CheckpointPolicy policy_;
   double next_;
 };
+
+// The files a run writes whatever happens, claimed before any of them is opened: the logs,
+// the series, the summary, the checkpoint, the scene's record and the solvers' tables.
+std::vector<std::string> fixed_run_files(const World& world) {
+  std::vector<std::string> files = {"particles.pvd",  "metrics.csv",      "probes.csv",
+                                    "summary.json",   "bodies.csv",       "body_forces.csv",
+                                    kSceneRecordFile, kCheckpointFileName};
+  for (const std::string& table : SolverTableLogs::file_names(world)) files.push_back(table);
+  return files;
+}
 
 }  // namespace
 
@@ -242,16 +297,27 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
   };
 
   const std::filesystem::path checkpoint_path = options.out_dir / kCheckpointFileName;
-  if (records) ensure_directory(options.out_dir);
+  // What the run owns in its folder (run_manifest.h); only rank 0 writes there. A folder of
+  // someone else's files is refused here, before anything is written.
+  std::optional<RunManifest> manifest;
+  if (records) {
+    if (options.resume) check_folder_records_scene(options.out_dir, options.scene_text);
+    manifest.emplace(options.resume ? RunManifest::for_continued_run(options.out_dir)
+                                    : RunManifest::for_new_run(options.out_dir, options.overwrite));
+  }
   // Before anything is written: a misspelt field stops the run with nothing but the directory.
   std::vector<std::string> fields = check_output_fields(scene, world.particles());
   std::size_t replaced = 0;
-  if (records) {
+  const bool writes_frames =
+      options.write_frames && (scene.output.vtp || scene.output.ply || scene.output.surface);
+  if (manifest) {
     // The checks passed: an earlier run in the same directory goes now, not before (a refused run
-    // leaves it as it was).
-    replaced = options.resume ? 0 : clear_earlier_run(options.out_dir);
+    // leaves it as it was), and only the files its manifest lists.
+    if (!options.resume) replaced = manifest->clear_previous();
+    manifest->claim(fixed_run_files(world));
+    if (writes_frames) manifest->claim_directory("frames");
     if (!options.resume && !options.scene_text.empty())
-      write_file_atomically(options.out_dir / "scene.json",
+      write_file_atomically(options.out_dir / kSceneRecordFile,
                             [&](std::ostream& out) { out << options.scene_text; });
   }
   const double end = options.end_time.value_or(scene.world.time.end);
@@ -270,21 +336,28 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
   const std::size_t frozen_count = world.count(ParticleType::Frozen);  // every rank: a collective
   std::optional<RunRecorder> recorder;
   if (records)
-    recorder.emplace(scene, options, world, std::move(fields), frozen_count, result, clock);
+    recorder.emplace(scene, options, world, std::move(fields), frozen_count, result, clock,
+                     *manifest);
   // Whether a frame gathers every rank's particles on rank 0: always, unless the .vtp frames go
   // out as pieces per rank and nothing else in a frame reads the particles.
   const bool frames_gather = !pieces || agreed(recorder && recorder->frame_reads_particles());
   // A frame of `mine` (this rank's particles, or its last good state) at `time`.
+  // Frame `frame`'s pieces of every rank, recorded by rank 0 before any rank writes them: the
+  // collective that follows is the barrier.
+  auto claim_pieces = [&](int frame) {
+    if (manifest) manifest->claim(pieces->files_of_frame(frame));
+    return int(domain->max(double(frame)));
+  };
   auto write_frame = [&](const Particles& mine, double time) {
     FramePieceNames names;
-    if (pieces)
-      names = pieces->write(mine, int(domain->max(recorder ? double(recorder->frames()) : 0.0)));
+    if (pieces) names = pieces->write(mine, claim_pieces(recorder ? recorder->frames() : 0));
     const Particles& state = frames_gather ? whole(mine) : mine;
     if (recorder) recorder->frame(state, time, names);
   };
   if (options.resume) {
     StateReader in = read_checkpoint(checkpoint_path);
     (void)read_header(in);
+    read_scene_identity(in, options.scene_text);
     world.restore_state(in);
     in.section("run");
     if (recorder) {
@@ -302,7 +375,8 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
     if (recorder && options.write_frames && options.on_output_estimate &&
         world.time() < end - 1e-12)
       options.on_output_estimate(recorder->estimate(first, end, true));
-    const FramePieceNames names = pieces ? pieces->write(world.particles(), 0) : FramePieceNames{};
+    const FramePieceNames names =
+        pieces ? pieces->write(world.particles(), claim_pieces(0)) : FramePieceNames{};
     if (recorder) recorder->frame(first, world.time(), names);
   }
 
@@ -326,6 +400,8 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
     StateWriter out;
     out.section("header");
     out.put_string(options.checkpoint_header);
+    out.section("scene");
+    out.put(scene_identity(options.scene_text));
     world.save_state(out);
     out.section("run");
     if (recorder) {
@@ -338,6 +414,7 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
     if (domain) domain->broadcast(bytes);
     StateReader again(std::move(bytes), checkpoint_path.string());
     (void)read_header(again);
+    read_scene_identity(again, options.scene_text);
     world.restore_state(again);
   };
   CheckpointSchedule checkpoints(options.checkpoint, world.time());

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "framework/run/frame_writer.h"
+#include "framework/run/run_manifest.h"
 #include "framework/scene/scene.h"
 #include "framework/solver/registry.h"
 #include "framework/world/device_pipeline.h"
@@ -52,7 +53,7 @@ struct RunOptions {
   bool write_frames = true;
   std::function<void(const RunProgress&)> on_progress;  // called after every step
   std::function<void(const World&)> on_step;            // tests and tools look at the world
-  // Called once before anything but scene.json is written, when the run writes frames.
+  // Called once before anything but upf_scene.json is written, when the run writes frames.
   std::function<void(const OutputEstimate&)> on_output_estimate;
   // False: an instability ends the run with status "unstable" instead of throwing, so a
   // comparison keeps the figures of the steps that did succeed.
@@ -64,9 +65,13 @@ struct RunOptions {
   // Kept at the head of every checkpoint for the caller: the command line stores the scene and
   // its options there, so `upf run --resume DIR` needs nothing else (read_checkpoint_header).
   std::string checkpoint_header;
-  // The scene file's text: kept as out_dir/scene.json once the run's checks have passed (not on
-  // resume), so tools such as `upf render` know the scene a run directory came from.
+  // The scene file's text: kept as out_dir/upf_scene.json once the run's checks have passed
+  // (not on resume), so tools such as `upf render` know the scene a run directory came from.
+  // On resume it must be the scene recorded there: a checkpoint of another scene is refused.
   std::string scene_text;
+  // A new run into a non-empty folder that no upf run recorded (run_manifest.h): false refuses
+  // it; true replaces the files at the names the run writes and removes nothing else.
+  bool overwrite = false;
   // Continue the run whose checkpoint is in out_dir, with the scene it was made from.
   bool resume = false;
   // Polled after every step: true ends the run after a checkpoint (status "interrupted").
@@ -102,7 +107,8 @@ struct RunResult {
   double max_density_error = 0;
   double fluid_particle_steps_per_second = 0;
   std::vector<std::pair<std::string, double>> final_probes;
-  // Files of an earlier run in the same directory, removed before this one wrote anything.
+  // Files of an earlier run in the same directory (its manifest's), removed before this one
+  // wrote anything.
   std::size_t replaced_files = 0;
   int checkpoints = 0;                    // written by this process
   std::filesystem::path checkpoint_file;  // the last one written, if any

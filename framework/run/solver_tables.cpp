@@ -4,20 +4,28 @@
 
 namespace upf {
 
+std::vector<std::string> SolverTableLogs::file_names(const World& world) {
+  std::vector<std::string> files;
+  for (const auto& solver : world.solvers())
+    for (const SolverTable& table : solver->tables(world)) {
+      std::string file = table.file;
+      for (int n = 2; std::find(files.begin(), files.end(), file + ".csv") != files.end(); ++n)
+        file = table.file + "_" + std::to_string(n);
+      files.push_back(file + ".csv");
+    }
+  return files;
+}
+
 SolverTableLogs::SolverTableLogs(const World& world, const std::filesystem::path& out_dir,
                                  bool resuming)
     : world_(world) {
-  std::vector<std::string> files;
+  const std::vector<std::string> files = file_names(world);
+  std::size_t k = 0;
   for (const auto& solver : world.solvers()) {
     const std::vector<SolverTable> tables = solver->tables(world);
-    for (std::size_t t = 0; t < tables.size(); ++t) {
-      std::string file = tables[t].file;
-      for (int n = 2; std::find(files.begin(), files.end(), file) != files.end(); ++n)
-        file = tables[t].file + "_" + std::to_string(n);
-      files.push_back(file);
+    for (std::size_t t = 0; t < tables.size(); ++t, ++k)
       tables_.push_back({solver.get(), t, tables[t].columns.size(),
-                         ProbeLog(out_dir / (file + ".csv"), tables[t].columns, resuming)});
-    }
+                         ProbeLog(out_dir / files[k], tables[t].columns, resuming)});
   }
 }
 

@@ -17,6 +17,9 @@ class SolverTableLogs {
   // The world's solvers' tables; a file name met twice gets "_2", "_3" ... after it.
   SolverTableLogs(const World& world, const std::filesystem::path& out_dir, bool resuming);
 
+  // The files the constructor makes, "FILE.csv" relative to the output directory, in order.
+  static std::vector<std::string> file_names(const World& world);
+
   bool empty() const { return tables_.empty(); }
   // A row of each table from `state` at `time`; none from a state that lacks what they need.
   void add(const Particles& state, double time);

@@ -10,6 +10,18 @@ using json = nlohmann::json;
 std::string where(const SceneOverride& o) {
   return "--set " + o.given;
 }
+
+// The value at `parent`, or an InputError naming the --set: the JSON library throws its own
+// errors for some pointers (an index beyond size_t, a leading zero) instead of answering false.
+json& container_at(json& document, const json::json_pointer& parent, const SceneOverride& o) {
+  const std::string missing = "the scene has no " + parent.to_string() + " to set a value in";
+  try {
+    if (!document.contains(parent)) throw InputError(where(o), missing);
+    return document.at(parent);
+  } catch (const json::exception&) {
+    throw InputError(where(o), missing);
+  }
+}
 }  // namespace
 
 SceneOverride parse_override(const std::string& argument) {
@@ -28,17 +40,24 @@ SceneOverride parse_override(const std::string& argument) {
   }
   if (o.pointer.empty()) throw InputError(at, "the pointer must name a value inside the scene");
   const std::string text = argument.substr(equals + 1);
-  o.value = json::parse(text, nullptr, false);
-  if (o.value.is_discarded()) o.value = text;  // not JSON: the text itself, as a string
+  try {
+    o.value = json::parse(text);
+  } catch (const json::out_of_range&) {
+    // 1e400 is JSON, but no double holds it: taken as a string, it became "expected a number,
+    // found a string", blamed on the scene file.
+    throw InputError(at, "'" + text +
+                             "' holds a number out of the representable range: a double holds "
+                             "magnitudes up to about 1.8e308");
+  } catch (const json::exception&) {
+    o.value = text;  // not JSON: the text itself, as a string
+  }
   return o;
 }
 
 void apply_overrides(json& document, const std::vector<SceneOverride>& overrides) {
   for (const SceneOverride& o : overrides) {
     const json::json_pointer parent = o.pointer.parent_pointer();
-    if (!document.contains(parent))
-      throw InputError(where(o), "the scene has no " + parent.to_string() + " to set a value in");
-    json& container = document.at(parent);
+    json& container = container_at(document, parent, o);
     const std::string& key = o.pointer.back();
     if (container.is_object()) {
       container[key] = o.value;

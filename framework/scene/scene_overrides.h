@@ -19,7 +19,8 @@ struct SceneOverride {
   nlohmann::json value;
 };
 
-// "POINTER=VALUE". InputError naming "--set ARG" for a missing '=' or a malformed pointer.
+// "POINTER=VALUE". InputError naming "--set ARG" for a missing '=', a malformed pointer or a
+// number no double holds (1e400).
 SceneOverride parse_override(const std::string& argument);
 
 // Sets every override in order. The pointer's parent must exist: an object (the key is set or

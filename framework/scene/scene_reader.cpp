@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "framework/core/file_name.h"
 #include "framework/scene/json_input.h"
 #include "framework/scene/world_setting_specs.h"
 
@@ -273,10 +274,11 @@ void read_world_settings(JsonInput& in, const json& doc, WorldSettings& w) {
     t.dt_max = in.number(*it, "/time", spec_named(specs, "dt_max"), t.dt_max);
     t.cfl = in.number(*it, "/time", spec_named(specs, "cfl"), t.cfl);
     t.fixed_dt = in.number(*it, "/time", spec_named(specs, "fixed_dt"), t.fixed_dt);
-    if (t.dt_min > t.dt_max)
-      in.problem("/time/dt_min", "dt_min (" + std::to_string(t.dt_min) +
-                                     " s) is larger than dt_max (" + std::to_string(t.dt_max) +
-                                     " s)");
+    if (t.dt_min > t.dt_max) {
+      std::ostringstream message;  // %g-like: 1e-300 is not "0.000000"
+      message << "dt_min (" << t.dt_min << " s) is larger than dt_max (" << t.dt_max << " s)";
+      in.problem("/time/dt_min", message.str());
+    }
   }
   if (auto it = doc.find("stability"); it != doc.end() && in.expect_object(*it, "/stability")) {
     const auto specs = stability_setting_specs();
@@ -555,6 +557,11 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
 
   scene.name =
       in.string(doc, "", "name", false).value_or(std::filesystem::path(source).stem().string());
+  // The name becomes the default output folder, out/<name>: one plain name, never a path.
+  if (auto bad = file_name_problem(scene.name))
+    in.problem("/name", "'" + scene.name + "' " + *bad +
+                            ": the name becomes the output folder out/<name>, so it must be one "
+                            "plain name (no '/', '\\', '..', control characters or leading '-')");
   in.string(doc, "", "description", false);
   // Checked against the devices of the build when a run makes it (device/device_pipelines.h).
   scene.device = in.string(doc, "", "device", false).value_or("cpu");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "framework/solver/solver.h"
+#include "framework/world/particle_source.h"
 
 namespace upf {
 
@@ -18,6 +19,8 @@ struct StepReport {
   // Wall milliseconds by stage, in World::stage_names() order: every solver's declared stages,
   // then "bodies" when there are body systems.
   std::vector<std::pair<std::string, double>> stage_ms;
+  // What emitters and sinks did before the step (particle_source.h).
+  SourceChange sources;
 };
 
 }  // namespace upf

@@ -14,6 +14,7 @@
 #include "framework/core/stopwatch.h"
 #include "framework/particles/kinetic_energy.h"
 #include "framework/particles/particle_checks.h"
+#include "framework/particles/particle_identity.h"
 
 namespace upf {
 
@@ -55,6 +56,27 @@ void World::add_body_system(std::unique_ptr<BodySystem> system) {
   bodies_.push_back(std::move(system));
 }
 
+void World::add_source(std::unique_ptr<ParticleSource> source) {
+  sources_.push_back(std::move(source));
+}
+
+void World::apply_sources(double dt) {
+  sources_done_ = SourceChange{};
+  bool any = false;
+  for (const auto& s : sources_) any = any || s->may_change(time_, dt);
+  if (!any) return;
+  // From a device: downloaded here, and uploaded whole before the step (device_stale_), so
+  // the pipeline's arrays take the new count as they take any host edit.
+  Particles& p = particles();
+  for (const auto& s : sources_) {
+    const SourceChange c = s->apply(p, time_, dt);
+    sources_done_.added += c.added;
+    sources_done_.removed += c.removed;
+    sources_done_.mass_added += c.mass_added;
+    sources_done_.mass_removed += c.mass_removed;
+  }
+}
+
 int World::request_neighbours(TypeMask query, TypeMask target, Real radius) {
   const Real support = settings_.support_radius();
   if (!(radius > 0) || radius > support) radius = support;  // the grid's cells cap the reach
@@ -88,6 +110,8 @@ void World::prepare() {
   }
   // Every field is declared now: a later request for an unknown name is a misspelling.
   particles_.seal_fields();
+  // Before any split over ranks: what a checkpoint of this scene must hold (restore_state).
+  identity_ = particle_identity(particles_);
   prepared_ = true;
   update_neighbours();
   for (auto& s : solvers_) s->initialize_fields(*this);
@@ -140,6 +164,7 @@ void World::update_neighbours() {
 
 void World::step(double dt) {
   if (!prepared_) throw std::logic_error("World::prepare() must run before World::step()");
+  apply_sources(dt);
   if (device_) {
     step_on_device(dt);
     return;
@@ -164,6 +189,7 @@ void World::step(double dt) {
   update_neighbours();
   report_ = StepReport{};
   report_.dt = dt;
+  report_.sources = sources_done_;
   report_.neighbour_ms = neighbours.elapsed_ms();
 
   coupling_.reset(particles_.size());
@@ -198,6 +224,10 @@ void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
                      "a device pipeline runs on one rank: run it without mpirun -n, or run the "
                      "ranks on the CPU");
   if (domain_) throw std::logic_error("World::set_domain() may run once");
+  if (domain && domain->ranks() > 1 && !sources_.empty())
+    throw InputError("mpirun -n " + std::to_string(domain->ranks()),
+                     "emitters and sinks (\"" + std::string(sources_.front()->name()) +
+                         "\") do not run split over MPI ranks yet: run the scene on one rank");
   if (domain && domain->ranks() > 1)
     for (const auto& s : solvers_)
       if (const std::string why = s->cannot_split(); !why.empty())
@@ -260,6 +290,7 @@ void World::step_on_device(double dt) {
   upload_if_stale();
   report_ = StepReport{};
   report_.dt = dt;
+  report_.sources = sources_done_;
   device_->step(step_count_, dt, report_);
   host_stale_ = true;  // also when a body system's host edit synced it earlier in this step
   Stopwatch body_watch;
@@ -352,6 +383,7 @@ void World::save_state(StateWriter& out) const {
   out.put(step_count_);
   out.put(std::uint64_t(solvers_.size()));
   out.put(std::uint64_t(bodies_.size()));
+  out.put(std::uint64_t(sources_.size()));
   if (domain_) {
     // Every rank's particles, gathered on rank 0 in id order: the checkpoint of a split world is
     // a one-rank checkpoint, and resumes on any number of ranks. (The other ranks' bytes are
@@ -370,6 +402,10 @@ void World::save_state(StateWriter& out) const {
     out.section(b->name());
     b->save_state(out);
   }
+  for (const auto& s : sources_) {
+    out.section(s->name());
+    s->save_state(out);
+  }
 }
 
 void World::restore_state(StateReader& in) {
@@ -379,11 +415,17 @@ void World::restore_state(StateReader& in) {
   step_count_ = in.get<std::uint64_t>();
   in.expect(in.get<std::uint64_t>() == solvers_.size(), "the number of solvers");
   in.expect(in.get<std::uint64_t>() == bodies_.size(), "the number of body systems");
-  particles_.restore_state(in);
-  for (std::size_t i = 0; i < particles_.size(); ++i) {
-    in.expect(int(particles_.type[i]) < kParticleTypeCount, "particle type");
-    in.expect(particles_.material[i] < materials_.size(), "particle material");
-  }
+  in.expect(in.get<std::uint64_t>() == sources_.size(), "the number of emitters and sinks");
+  // Read into a copy and checked before the world takes it: a checkpoint is validated, not
+  // trusted (its checksum only proves it was not damaged by accident).
+  Particles restored = particles_;
+  restored.restore_state(in);
+  std::vector<ParticleType> material_types;
+  for (const Material& m : materials_.all()) material_types.push_back(m.type);
+  if (auto problem = particle_array_problem(restored, material_types)) in.fail(*problem);
+  in.expect(particle_identity(restored) == identity_,
+            "the walls, bodies and grains (their ids, types, materials and bodies)");
+  particles_.swap_values(restored);
   // A checkpoint holds the whole world: a split world takes its share again.
   if (domain_) domain_->distribute(particles_, coupling_);
   for (const auto& s : solvers_) {
@@ -393,6 +435,10 @@ void World::restore_state(StateReader& in) {
   for (const auto& b : bodies_) {
     in.section(b->name());
     b->restore_state(in);
+  }
+  for (const auto& s : sources_) {
+    in.section(s->name());
+    s->restore_state(in);
   }
   particles_.snapshot_into(last_good_);
   device_stale_ = device_ != nullptr;

@@ -27,6 +27,7 @@
 #include "framework/world/coupling.h"
 #include "framework/world/device_pipeline.h"
 #include "framework/world/particle_domain.h"
+#include "framework/world/particle_source.h"
 #include "framework/world/step_report.h"
 #include "framework/world/world_settings.h"
 
@@ -61,6 +62,9 @@ class World {
   CouplingArrays& coupling() { return coupling_; }
   const CouplingArrays& coupling() const { return coupling_; }
   void add_body_system(std::unique_ptr<BodySystem> system);
+  // Adds or removes particles before every step (particle_source.h: emitters, sinks).
+  void add_source(std::unique_ptr<ParticleSource> source);
+  const std::vector<std::unique_ptr<ParticleSource>>& sources() const { return sources_; }
   const std::vector<std::unique_ptr<BodySystem>>& body_systems() const { return bodies_; }
   void add_container(const ContainerBox& box) { containers_.push_back(box); }
   const std::vector<ContainerBox>& containers() const { return containers_; }
@@ -139,6 +143,8 @@ class World {
   void update_neighbours();
   void check_stability() const;
   void step_on_device(double dt);
+  // Every source's changes before the step of `dt` from now, summed into `sources_done_`.
+  void apply_sources(double dt);
   void check_stability_on_device();
   // Downloads the device's particles when they are newer than the host's.
   void sync_host() const;
@@ -156,10 +162,14 @@ class World {
   std::vector<StageRunner> stage_runners_;  // parallel to solvers_, made by prepare()
   CouplingArrays coupling_;
   std::vector<std::unique_ptr<BodySystem>> bodies_;
+  std::vector<std::unique_ptr<ParticleSource>> sources_;
+  SourceChange sources_done_;  // before the step being taken, for its report
   std::vector<ContainerBox> containers_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   bool prepared_ = false;
+  // The prepared scene's particles (particle_identity.h): a checkpoint must hold the same.
+  std::uint64_t identity_ = 0;
   StepReport report_;
   std::unique_ptr<DevicePipeline> device_;
   std::unique_ptr<ParticleDomain> domain_;

@@ -8,6 +8,7 @@
 
 #include "framework/core/errors.h"
 #include "framework/world/world.h"
+#include "python_callback.h"
 
 namespace py = pybind11;
 
@@ -82,7 +83,7 @@ void PythonForce::apply(World& world, Real dt) {
                                     py::arg("material") = gather<MaterialId>(p.material, chosen_),
                                     py::arg("type") = gather<std::uint8_t>(p.type, chosen_),
                                     py::arg("time") = world.time(), py::arg("dt") = double(dt));
-  py::object result = function_(state);
+  py::object result = call_python([&] { return function_(state); });
   // ensure() gives a null array (no exception) for what NumPy cannot convert.
   const auto force = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(result);
   const py::ssize_t n = py::ssize_t(chosen_.size());

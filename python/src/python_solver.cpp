@@ -1,8 +1,10 @@
 #include "python_solver.h"
 
+#include <cmath>
 #include <utility>
 
 #include "framework/world/world.h"
+#include "python_callback.h"
 #include "solver_world.h"
 
 namespace py = pybind11;
@@ -22,7 +24,26 @@ py::object call_with_world(const py::object& solver, const char* method, World& 
     ~Revoke() { w.revoke(); }
   } revoke{revocable};
   const py::object world_view = py::module_::import("upf.solver").attr("World")(handle);
-  return solver.attr(method)(world_view, std::forward<Args>(args)...);
+  return call_python([&] { return solver.attr(method)(world_view, std::forward<Args>(args)...); });
+}
+
+// What a method returned, for messages: its repr (cut short) and its type.
+std::string shown(const py::handle& value) {
+  return py::repr(value).cast<std::string>().substr(0, 80) + " (" +
+         py::str(py::type::of(value).attr("__name__")).cast<std::string>() + ")";
+}
+
+// `value` as T, or a TypeError naming the solver, the method and the type it should have been:
+// pybind11's own cast error names none of them.
+template <class T>
+T returned(const py::handle& value, const std::string& solver, const std::string& what,
+           const char* expected) {
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    throw py::type_error("solver '" + solver + "': " + what + " must be " + expected +
+                         "; it returned " + shown(value));
+  }
 }
 }  // namespace
 
@@ -42,7 +63,16 @@ void PythonSolver::prepare(World& world) {
 Real PythonSolver::max_time_step(const World& world) const {
   py::gil_scoped_acquire gil;
   // The handle is the same kind as step's; the method is asked only for a number.
-  return call_with_world(solver_, "max_time_step", const_cast<World&>(world)).cast<Real>();
+  const py::object dt = call_with_world(solver_, "max_time_step", const_cast<World&>(world));
+  const double s = returned<double>(dt, name_, "max_time_step()",
+                                    "a number: the largest stable step in seconds (math.inf for "
+                                    "no limit)");
+  if (std::isnan(s) || s <= 0)
+    throw py::value_error("solver '" + name_ +
+                          "': max_time_step() must return a step in seconds above 0 (math.inf "
+                          "for no limit); it returned " +
+                          shown(dt));
+  return Real(s);
 }
 
 void PythonSolver::step(World& world, Real dt, StageRunner& run) {
@@ -55,10 +85,23 @@ void PythonSolver::step(World& world, Real dt, StageRunner& run) {
 SolverStats PythonSolver::stats() const {
   py::gil_scoped_acquire gil;
   SolverStats s;
-  const py::dict d = solver_.attr("stats")();
-  if (d.contains("iterations")) s.iterations = d["iterations"].cast<int>();
-  if (d.contains("avg_density_error")) s.avg_density_error = d["avg_density_error"].cast<double>();
-  if (d.contains("max_density_error")) s.max_density_error = d["max_density_error"].cast<double>();
+  const py::object result = call_python([&] { return solver_.attr("stats")(); });
+  const std::string what = "stats()";
+  if (!py::isinstance<py::dict>(result))
+    throw py::type_error("solver '" + name_ + "': " + what +
+                         " must return a dict (iterations, avg_density_error, "
+                         "max_density_error); it returned " +
+                         shown(result));
+  const py::dict d = result;
+  auto entry = [&](const char* key) { return what + "['" + key + "']"; };
+  if (d.contains("iterations"))
+    s.iterations = returned<int>(d["iterations"], name_, entry("iterations"), "an int");
+  if (d.contains("avg_density_error"))
+    s.avg_density_error =
+        returned<double>(d["avg_density_error"], name_, entry("avg_density_error"), "a number");
+  if (d.contains("max_density_error"))
+    s.max_density_error =
+        returned<double>(d["max_density_error"], name_, entry("max_density_error"), "a number");
   return s;
 }
 

@@ -4,6 +4,7 @@
 // generation() before every use, and every step, run or restore moves it on.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include "framework/core/state_stream.h"
 #include "framework/run/simulation_run.h"
 #include "framework/scene/scene.h"
 #include "framework/solver/registry.h"
@@ -41,8 +43,9 @@ class Simulation {
   // the call with the world whole, at the step it reached.
   void advance_to(double t, const std::function<void()>& between_steps = {});
   // Runs into `out` (everything `upf run` writes) from the current time to `end` (default: the
-  // scene's end).
-  RunResult run(const std::filesystem::path& out, std::optional<double> end, bool frames);
+  // scene's end). `overwrite`: as `upf run --overwrite` (run_manifest.h).
+  RunResult run(const std::filesystem::path& out, std::optional<double> end, bool frames,
+                bool overwrite = false);
 
   double time() const { return world_->time(); }
   std::uint64_t step_count() const { return world_->step_count(); }
@@ -53,10 +56,19 @@ class Simulation {
 
  private:
   double next_frame_time() const;
-  // work(world) on the prepared world. An exception out of it leaves the world half-stepped: it
-  // is remembered, and every later step or run refuses.
+  // work(world) on the prepared world. An exception from inside a step leaves the world
+  // half-stepped: it is remembered, and every later step or run refuses. Three kinds leave it
+  // usable: InputError and OutputError (checks and files, between steps: the world does no I/O)
+  // and a Ctrl-C in a Python callback (CallbackInterrupted), after which the state saved before
+  // the step is put back.
   template <class Work>
   auto guarded(Work&& work);
+  // The state before the step about to run, kept when a Python callback could be interrupted
+  // in it (a Python force or solver): a copy of the world per step, so only then.
+  void save_before_step(const World& w);
+  // Refuses a step, advance or run that starts while another is going (a Python callback of the
+  // step calling back into it, or another thread): the world is mid-step.
+  class Busy;
 
   SceneDescription scene_;
   std::shared_ptr<const Registry> registry_;
@@ -64,6 +76,10 @@ class Simulation {
   std::string device_where_;
   std::unique_ptr<World> world_;
   bool prepared_ = false;
+  bool preparing_ = false;  // a Python solver's prepare may call back in
+  std::atomic<bool> busy_{false};
+  bool interruptible_ = false;  // has Python callbacks; known once prepared
+  StateWriter before_step_;     // save_before_step's state; empty: none
   std::uint64_t generation_ = 0;
   std::string failure_;
 };

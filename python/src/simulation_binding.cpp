@@ -41,13 +41,23 @@ std::string read_text(const std::filesystem::path& path) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-// A simulation of `scene` read from `text` (kept as the run's scene.json); `solver` replaces
+// The `upf` program's limit (its --threads option): far more threads than cores only costs, and
+// OpenMP cannot start 100,000 of them (the first step crashed).
+constexpr int kMaxThreads = 1024;
+
+void check_threads(int threads) {
+  if (threads < 0 || threads > kMaxThreads)
+    throw InputError("threads", std::to_string(threads) + " is outside 0 (OpenMP's default) to " +
+                                    std::to_string(kMaxThreads));
+}
+
+// A simulation of `scene` read from `text` (kept as the run's upf_scene.json); `solver` replaces
 // every liquid material's solver (upf run --solver).
 std::unique_ptr<Simulation> make_simulation(SceneDescription scene, std::string text,
                                             const RegistryHandle& registry, int threads,
                                             const std::string& solver, const std::string& device,
                                             const std::string& source) {
-  if (threads < 0) throw InputError("threads", "must be 0 (OpenMP's default) or more");
+  check_threads(threads);
   if (!solver.empty()) scene = with_solver(scene, *registry.registry, solver);
   // The argument overrides the scene's key, as `upf run --device` does.
   std::string where = source + ":/device";
@@ -76,6 +86,7 @@ py::dict body_dict(const NamedBodyState& b) {
 py::object compare(const std::filesystem::path& scene_file, const std::vector<std::string>& solvers,
                    const std::filesystem::path& out, std::optional<double> end, int threads,
                    bool frames, const RegistryHandle& registry) {
+  check_threads(threads);
   const Registry& r = *registry.registry;
   const SceneDescription scene = load_scene_file(scene_file, r);
   const auto plan =
@@ -146,15 +157,16 @@ void bind_simulation(py::module_& m) {
       .def(
           "run",
           [](Simulation& s, const std::filesystem::path& out, std::optional<double> end,
-             bool frames) {
+             bool frames, bool overwrite) {
             RunResult r;
             {
               py::gil_scoped_release release;
-              r = s.run(out, end, frames);
+              r = s.run(out, end, frames, overwrite);
             }
             return json_to_python(run_result_json(r));
           },
-          py::arg("out"), py::arg("end") = py::none(), py::arg("frames") = true)
+          py::arg("out"), py::arg("end") = py::none(), py::arg("frames") = true,
+          py::arg("overwrite") = false)
       .def(
           "array",
           [](py::object self, const std::string& name) {

@@ -115,11 +115,14 @@ class Simulation:
         """Steps until self.time == time, stopping on every frame time on the way."""
         self._core.advance_to(float(time))
 
-    def run(self, out, end=None, frames=True):
+    def run(self, out, end=None, frames=True, overwrite=False):
         """Runs from now to `end` (default: the scene's end) into the folder `out`, writing what
-        `upf run` writes (frames, metrics.csv, probes.csv, summary.json, scene.json; no
-        checkpoint). Returns summary.json's figures as a dict."""
-        return self._core.run(os.fspath(out), end, frames)
+        `upf run` writes (frames, metrics.csv, probes.csv, summary.json, upf_scene.json,
+        upf_manifest.txt; no checkpoint). Returns summary.json's figures as a dict. A new run
+        into `out` removes only what the earlier run there recorded; a non-empty folder no run
+        recorded is refused (upf.SceneError) unless `overwrite`, which replaces only the names
+        the run writes (docs/robustness.md, "What a run may delete")."""
+        return self._core.run(os.fspath(out), end, frames, overwrite)
 
     def particles(self):
         """The particle arrays as zero-copy NumPy views (upf.Particles), valid until the next

@@ -120,9 +120,9 @@ std::shared_ptr<const SceneSectionData> read_blocks(const json& node, const std:
       const double grains = std::floor(((*hi)[a] - (*lo)[a]) / pitch + 1e-9);
       block.count[std::size_t(a)] = grains >= 1 ? (long long)std::min(grains, 1e15) : 0;
       if (block.count[std::size_t(a)] < 1) {
-        in.problem(
-            JsonInput::child(where, "max"),
-            "the block is thinner than one grain diameter (" + std::to_string(pitch) + " m)");
+        std::ostringstream message;  // %g-like, never a 300-digit number
+        message << "the block is thinner than one grain diameter (" << pitch << " m)";
+        in.problem(JsonInput::child(where, "max"), message.str());
         ok = false;
       }
     }

@@ -117,7 +117,8 @@ TEST_F(Cli, NumberBeyondADoubleIsNamedWithItsPlace) {
 }
 
 TEST_F(Cli, SetOverridesAValueByJsonPointerAndTheRunRecordsIt) {
-  // SPlisHSPlasH-style overrides: the value is checked like the file's and kept in scene.json.
+  // SPlisHSPlasH-style overrides: the value is checked like the file's and kept in the run's
+  // record of its scene, upf_scene.json.
   auto doc = sample();
   const fs::path out = dir_ / "out";
   const std::string scene = write(doc);
@@ -128,7 +129,7 @@ TEST_F(Cli, SetOverridesAValueByJsonPointerAndTheRunRecordsIt) {
   std::ifstream summary_file(out / "summary.json");
   const auto summary = nlohmann::json::parse(summary_file);
   EXPECT_NEAR(summary["simulated_time_s"].get<double>(), 0.05, 1e-12);
-  std::ifstream recorded_file(out / "scene.json");
+  std::ifstream recorded_file(out / "upf_scene.json");
   const auto recorded = nlohmann::json::parse(recorded_file);
   EXPECT_EQ(recorded["materials"]["water"]["viscosity"], 0.01);
   EXPECT_EQ(recorded["name"], "my_shot");  // not JSON: taken as a string

@@ -294,3 +294,61 @@ TEST_F(Compare, VaryRunsASweepWithANamedRowPerValue) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every run of a sweep has a folder of its own, named after its values: values that would run
+// twice or share a folder, and a pointer varied twice (the later overwriting the earlier while
+// the rows are named after both), stop the command before anything runs.
+TEST_F(Compare, VaryRefusesValuesAndPointersThatWouldMixRuns) {
+  const std::string scene = small_scene(0.02);
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"--vary /time/end=0.02,0.02", {"--vary /time/end=0.02,0.02", "'0.02' is given twice"}},
+      {"--vary /time/end=0.02,2e-2", {"'0.02' and '2e-2' set the same value"}},
+      {"--vary /description=a/b,a_b",
+       {"--vary /description=a/b,a_b", "'a/b' and 'a_b' both become 'a_b'"}},
+      {"--vary /time/end=0.02 --vary /time/end=0.01",
+       {"--vary /time/end=0.02 and --vary /time/end=0.01", "both set /time/end"}},
+      {"--vary /time/end=0.02,0.01 --vary '/time={\"end\":0.03}'",
+       {"the later replaces /time, which holds /time/end"}},
+  };
+  for (const auto& [vary, needles] : cases) {
+    const Result r = run_upf("compare " + scene + " --solvers pcisph --no-frames -q " + vary +
+                             " --out " + out().string());
+    EXPECT_EQ(r.code, 2) << vary << "\n" << r.output;
+    for (const auto& n : needles) EXPECT_NE(r.output.find(n), std::string::npos) << n << r.output;
+    EXPECT_FALSE(fs::exists(out())) << vary << ": nothing may run";
+  }
+}
+
+// plan.json may be edited by hand: a run name that is a path would send a task's files outside
+// OUT, and two equal names would share a folder. Every task and the collect refuse such a plan.
+TEST_F(Compare, PlannedRunNamesMustBePlainAndUnique) {
+  const fs::path split = dir_ / "split";
+  ASSERT_EQ(run_upf("compare " + small_scene(0.01) +
+                    " --solvers pcisph,wcsph --no-frames -q --plan --out " + split.string())
+                .code,
+            0);
+  const auto plan = read_json(split / "plan.json");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"../escaped", "plan.json:/runs/1/name: '../escaped' holds a path separator"},
+      {(dir_ / "absolute").string(), "plan.json:/runs/1/name: '" + (dir_ / "absolute").string()},
+      {"..", "plan.json:/runs/1/name: '..' is '..'"},
+      {"pcisph", "plan.json:/runs/1/name: 'pcisph' is also the name of run 0"},
+  };
+  for (const auto& [name, needle] : cases) {
+    auto edited = plan;
+    edited["runs"][1]["name"] = name;
+    std::ofstream(split / "plan.json") << edited.dump(2);
+    for (const std::string mode : {"--task 1", "--task 0", "--collect"}) {
+      const Result r = run_upf("compare -q " + mode + " --out " + split.string());
+      EXPECT_EQ(r.code, 2) << name << " " << mode << "\n" << r.output;
+      EXPECT_NE(r.output.find(needle), std::string::npos) << needle << "\n" << r.output;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "escaped"));
+    EXPECT_FALSE(fs::exists(dir_ / "absolute"));
+    EXPECT_FALSE(fs::exists(split / "pcisph")) << "no task may run";
+  }
+}
+
+}  // namespace

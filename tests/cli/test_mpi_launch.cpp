@@ -187,6 +187,20 @@ TEST_F(MpiLaunch, MpirunWritesFramesAsOnePiecePerRank) {
       run_upf("render " + split.string() + " --frames 3:3 --size 160x90 --no-video -q");
   EXPECT_EQ(render.code, 0) << render.output;
   EXPECT_TRUE(fs::exists(split / "render" / "frame_00003.png"));
+
+  // A later run into the folder removes what this one wrote, pictures included, from its
+  // manifest (before: a 3-rank run's pieces stayed beside a 2-rank or one-rank run's files).
+  const Result two = mpirun(2, "run " + scene + options + split.string());
+  ASSERT_EQ(two.code, 0) << two.output;
+  EXPECT_TRUE(fs::exists(split / "frames" / "frame_00003_p0001.vtp"));
+  EXPECT_FALSE(fs::exists(split / "frames" / "frame_00003_p0002.vtp"));
+  EXPECT_FALSE(fs::exists(split / "frames" / "frozen_p0002.vtp"));
+  EXPECT_FALSE(fs::exists(split / "render" / "frame_00003.png"));
+  const Result one_more = run_upf("run " + scene + options + split.string() + " -j 1");
+  ASSERT_EQ(one_more.code, 0) << one_more.output;
+  for (const auto& entry : fs::directory_iterator(split / "frames"))
+    EXPECT_EQ(entry.path().extension(), ".vtp") << entry.path();  // no .pvtp, no stale piece
+  EXPECT_FALSE(fs::exists(split / "frames" / "frame_00000_p0000.vtp"));
 }
 
 // A rank that dies mid-run (killed: no error of ours to report) ends the job: mpirun notices,

@@ -188,7 +188,7 @@ def test_python_steps_are_upf_runs_bit_for_bit(source_dir, upf_executable, tmp_p
     for name in frames:
         assert filecmp.cmp(tmp_path / "cli" / "frames" / name, tmp_path / "py" / "frames" / name,
                            shallow=False), name
-    for name in ("particles.pvd", "probes.csv", "scene.json"):
+    for name in ("particles.pvd", "probes.csv", "upf_scene.json"):
         assert filecmp.cmp(tmp_path / "cli" / name, tmp_path / "py" / name, shallow=False), name
     # Python stepping, one thread: the final state of the run, bit for bit.
     stepped = upf.Simulation.from_file(dam_break(source_dir), threads=1)
