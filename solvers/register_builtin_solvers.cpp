@@ -5,6 +5,7 @@
 #include "solvers/dfsph/register_dfsph.h"
 #include "solvers/iisph/register_iisph.h"
 #include "solvers/pcisph/register_pcisph.h"
+#include "solvers/sources/sources_section.h"
 #include "solvers/sph/register_sph.h"
 #include "solvers/wcsph/register_wcsph.h"
 
@@ -18,6 +19,7 @@ void register_builtins(Registry& registry) {
   register_dfsph(registry);
   register_iisph(registry);
   register_dem(registry);
+  register_sources(registry);
 }
 
 }  // namespace upf

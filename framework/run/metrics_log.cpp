@@ -16,10 +16,12 @@ double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
 }
 
 namespace {
-std::string metrics_header(const std::vector<std::string>& stages) {
+std::string metrics_header(const std::vector<std::string>& stages, bool sources) {
   std::string h =
       "step,t,dt,iterations,avg_density_error,max_density_error,kinetic_energy,"
-      "n_liquid,n_rigid,n_granular,n_frozen,neighbour_ms";
+      "n_liquid,n_rigid,n_granular,n_frozen,";
+  if (sources) h += "mass_in_kg,mass_out_kg,";
+  h += "neighbour_ms";
   for (const auto& s : stages) h += ',' + s + "_ms";
   return h + ",wall_ms\n";
 }
@@ -31,14 +33,17 @@ std::string probes_header(const std::vector<std::string>& names) {
 }  // namespace
 
 MetricsLog::MetricsLog(const std::filesystem::path& path, std::vector<std::string> stages,
-                       bool resuming)
-    : log_(path, metrics_header(stages), resuming), stages_(std::move(stages)) {}
+                       bool resuming, bool sources)
+    : log_(path, metrics_header(stages, sources), resuming),
+      stages_(std::move(stages)),
+      sources_(sources) {}
 
 void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
   std::ostream& out = log_.out();
   out << m.step << ',' << m.time << ',' << r.dt << ',' << r.solver.iterations << ','
       << r.solver.avg_density_error << ',' << r.solver.max_density_error << ',' << m.kinetic_energy;
   for (std::size_t c : m.count_by_type) out << ',' << c;
+  if (sources_) out << ',' << r.sources.mass_added << ',' << r.sources.mass_removed;
   out << ',' << r.neighbour_ms;
   for (const auto& s : stages_) {
     double ms = 0;

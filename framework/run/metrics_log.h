@@ -24,9 +24,10 @@ struct StepMetrics {
 class MetricsLog {
  public:
   // `stages`: the world's stage list (World::stage_names()), one timing column each.
-  // `resuming`: the file is left alone until restore_state opens it.
+  // `resuming`: the file is left alone until restore_state opens it. `sources`: the world has
+  // emitters or sinks, and each row says the mass they added and removed before its step.
   MetricsLog(const std::filesystem::path& path, std::vector<std::string> stages,
-             bool resuming = false);
+             bool resuming = false, bool sources = false);
   void add(const StepMetrics& m, const StepReport& r);
   void flush();
   void save_state(StateWriter& out);
@@ -35,6 +36,7 @@ class MetricsLog {
  private:
   ResumableLog log_;
   std::vector<std::string> stages_;  // stage columns
+  bool sources_ = false;
 };
 
 class ProbeLog {

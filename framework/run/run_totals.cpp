@@ -40,8 +40,9 @@ void RunTotals::add_stage(const std::string& name, double ms) {
   stages_.push_back({name, {ms}});
 }
 
-void RunTotals::add_step(const StepReport& r, RunResult& result) {
+void RunTotals::add_step(const StepReport& r, RunResult& result, std::size_t liquid) {
   step_ms_.push_back(r.total_ms);
+  sum_liquid_ += double(liquid);
   add_stage("neighbours", r.neighbour_ms);
   for (const auto& [name, ms] : r.stage_ms) add_stage(name, ms);
   sum_dt_ += r.dt;
@@ -61,9 +62,7 @@ void RunTotals::finish(RunResult& result) const {
   }
   double compute_s = 0;
   for (double ms : step_ms_) compute_s += ms / 1000.0;
-  if (compute_s > 0)
-    result.fluid_particle_steps_per_second =
-        double(result.liquid_particles) * double(result.steps) / compute_s;
+  if (compute_s > 0) result.fluid_particle_steps_per_second = sum_liquid_ / compute_s;
 }
 
 void RunTotals::write_summary(const std::filesystem::path& path, const SceneDescription& scene,
@@ -89,6 +88,7 @@ void RunTotals::save_state(StateWriter& out, const RunResult& r, double wall_sec
   out.put(sum_dt_);
   out.put(sum_iterations_);
   out.put(sum_avg_error_);
+  out.put(sum_liquid_);
   out.put(wall_seconds);
   out.put(std::int32_t(r.max_iterations));
   out.put(r.max_density_error);
@@ -111,6 +111,7 @@ void RunTotals::restore_state(StateReader& in, RunResult& r) {
   sum_dt_ = in.get<double>();
   sum_iterations_ = in.get<double>();
   sum_avg_error_ = in.get<double>();
+  sum_liquid_ = in.get<double>();
   wall_seconds_before_ = in.get<double>();
   r.max_iterations = in.get<std::int32_t>();
   r.max_density_error = in.get<double>();

@@ -13,8 +13,9 @@ namespace upf {
 
 class RunTotals {
  public:
-  // Adds the world's last step; the largest iterations and density error go into `result`.
-  void add_step(const StepReport& r, RunResult& result);
+  // Adds the world's last step, which ended with `liquid` liquid particles; the largest
+  // iterations and density error go into `result`.
+  void add_step(const StepReport& r, RunResult& result, std::size_t liquid);
   // Means, throughput and the rest of `result` from what was added; `result.steps` must be set.
   void finish(RunResult& result) const;
   // summary.json: `result`, the scene and its materials, median step and stage times.
@@ -31,6 +32,8 @@ class RunTotals {
   std::vector<double> step_ms_;
   std::vector<std::pair<std::string, std::vector<double>>> stages_;
   double sum_dt_ = 0, sum_iterations_ = 0, sum_avg_error_ = 0;
+  // Liquid particles summed over the steps: the throughput when emitters and sinks change them.
+  double sum_liquid_ = 0;
   double wall_seconds_before_ = 0;  // spent by the runs this one resumes
 };
 

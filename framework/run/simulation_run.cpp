@@ -127,7 +127,8 @@ class RunRecorder {
         out_dir_(options.out_dir),
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
                 frozen_count, options.surface_mesher, options.resume),
-        metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume),
+        metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume,
+                 !world.sources().empty()),
         probes_(options.out_dir / "probes.csv", probe_names(scene), options.resume),
         tables_(world, options.out_dir, options.resume) {}
 
@@ -155,7 +156,11 @@ class RunRecorder {
   // The metrics row of the world's last step (step_metrics).
   void step_row(const StepMetrics& m) {
     metrics_.add(m, world_.last_step());
-    totals_.add_step(world_.last_step(), result_);
+    totals_.add_step(world_.last_step(), result_, m.count_by_type[int(ParticleType::Liquid)]);
+    // The counts at the end: emitters and sinks change them from step to step.
+    result_.liquid_particles = m.count_by_type[int(ParticleType::Liquid)];
+    result_.total_particles = 0;
+    for (const std::size_t c : m.count_by_type) result_.total_particles += c;
   }
   int frames() const { return frames_.frames(); }
   // Whether a frame reads the particles beyond the .vtp pieces: probes, tables, PLY, surfaces.

@@ -1,0 +1,29 @@
+#include "solvers/sources/sink.h"
+
+#include <vector>
+
+#include "framework/core/vec3_eigen.h"
+#include "framework/particles/particles.h"
+
+namespace upf {
+
+bool Sink::contains(const Eigen::Vector3d& x) const {
+  if (desc_.box)
+    return (x.array() >= desc_.box->min.array()).all() &&
+           (x.array() <= desc_.box->max.array()).all();
+  return (x - desc_.point).dot(desc_.normal) > 0;
+}
+
+SourceChange Sink::apply(Particles& particles, double /*time*/, double /*dt*/) {
+  SourceChange change;
+  std::vector<std::uint8_t> doomed(particles.size(), 0);
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (particles.type[i] == ParticleType::Liquid && contains(to_eigen(particles.position[i]))) {
+      doomed[i] = 1;
+      change.mass_removed += double(particles.mass[i]);
+    }
+  change.removed = particles.remove(doomed);
+  return change;
+}
+
+}  // namespace upf

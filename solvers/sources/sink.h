@@ -1,0 +1,35 @@
+// A sink: a region where liquid leaves the scene, a box or a half-space (beyond a plane, on the
+// side its normal points to), like SPlisHSPlasH's and DualSPHysics' outlets without a buffer.
+// Before each step it removes every liquid particle whose centre is inside; walls, bodies and
+// grains are never removed (particle_source.h: survivors keep their order).
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
+#include "framework/scene/scene.h"
+#include "framework/world/particle_source.h"
+
+namespace upf {
+
+struct SinkDesc {
+  std::string name;
+  std::optional<Box> box;                             // a box sink, or
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // a half-space through `point`
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // pointing into the removed side (unit)
+};
+
+class Sink : public ParticleSource {
+ public:
+  explicit Sink(SinkDesc desc) : desc_(std::move(desc)) {}
+  std::string_view name() const override { return desc_.name; }
+  bool may_change(double, double) const override { return true; }
+  SourceChange apply(Particles& particles, double time, double dt) override;
+  bool contains(const Eigen::Vector3d& x) const;
+
+ private:
+  SinkDesc desc_;
+};
+
+}  // namespace upf

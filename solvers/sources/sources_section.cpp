@@ -1,0 +1,409 @@
+#include "solvers/sources/sources_section.h"
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "framework/core/vec3_eigen.h"
+#include "framework/scene/json_input.h"
+#include "framework/scene/scene.h"
+#include "framework/solver/registry.h"
+#include "framework/world/world.h"
+#include "solvers/sources/emitter.h"
+#include "solvers/sources/sink.h"
+
+namespace upf {
+
+namespace {
+
+using nlohmann::json;
+
+// An emitter as read: what its source needs, and its nozzle's walls.
+struct EmitterEntry {
+  EmitterDesc desc;
+  MaterialId nozzle_material = 0;
+  std::vector<Eigen::Vector3d> nozzle;  // positions of the nozzle's frozen particles
+};
+
+struct EmittersData : SceneSectionData {
+  std::vector<EmitterEntry> emitters;
+  double estimated_particles() const override {
+    double n = 0;
+    for (const auto& e : emitters) n += double(e.nozzle.size());
+    return n;
+  }
+};
+
+struct SinksData : SceneSectionData {
+  std::vector<SinkDesc> sinks;
+};
+
+// The material named at object[key], if it exists and has particles of `type`; else a problem.
+std::optional<MaterialId> material_of(JsonInput& in, const json& object, const std::string& path,
+                                      const char* key, const SceneDescription& scene,
+                                      ParticleType type, bool required) {
+  const auto name = in.string(object, path, key, required);
+  if (!name) return std::nullopt;
+  const std::string where = JsonInput::child(path, key);
+  for (std::size_t m = 0; m < scene.materials.size(); ++m)
+    if (scene.materials[m].name == *name) {
+      if (scene.materials[m].type == type) return MaterialId(m);
+      in.problem(where, "material '" + *name + "' is " +
+                            std::string(to_string(scene.materials[m].type)) + "; it must be " +
+                            std::string(to_string(type)));
+      return std::nullopt;
+    }
+  if (!scene.rejected(*name)) in.problem(where, "unknown material '" + *name + "'");
+  return std::nullopt;
+}
+
+// Two unit vectors spanning the plane normal to `d`: `width` (projected) first when given.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> plane_axes(
+    const Eigen::Vector3d& d, const std::optional<Eigen::Vector3d>& width) {
+  Eigen::Vector3d seed;
+  if (width && (*width - width->dot(d) * d).norm() > 1e-6 * width->norm()) {
+    seed = *width;
+  } else {
+    int least = 0;  // the world axis least aligned with d
+    for (int a = 1; a < 3; ++a)
+      if (std::abs(d[a]) < std::abs(d[least])) least = a;
+    seed = Eigen::Vector3d::Unit(least);
+  }
+  const Eigen::Vector3d e1 = (seed - seed.dot(d) * d).normalized();
+  return {e1, d.cross(e1)};
+}
+
+// The speed: a number, or keyframes [[t, v], ...] with increasing times.
+std::optional<std::vector<std::pair<double, double>>> read_speed(JsonInput& in, const json& e,
+                                                                 const std::string& path) {
+  const std::string where = JsonInput::child(path, "speed");
+  auto it = e.find("speed");
+  if (it == e.end()) {
+    in.problem(where, "missing: a speed in m/s (a number, or keyframes [[t, v], ...])");
+    return std::nullopt;
+  }
+  if (it->is_number()) {
+    const double v = in.number(e, path, "speed", 0, 0, 1e4, true, "m/s");
+    if (!(v > 0)) return std::nullopt;
+    return std::vector<std::pair<double, double>>{{0.0, v}};
+  }
+  std::vector<std::pair<double, double>> keys;
+  bool ok = it->is_array() && !it->empty();
+  for (std::size_t k = 0; ok && k < it->size(); ++k) {
+    const json& key = (*it)[k];
+    ok = key.is_array() && key.size() == 2 && key[0].is_number() && key[1].is_number();
+    if (!ok) break;
+    const double t = key[0].get<double>(), v = key[1].get<double>();
+    if (!std::isfinite(t) || !std::isfinite(v) || v < 0 || v > 1e4 ||
+        (!keys.empty() && !(t > keys.back().first))) {
+      in.problem(JsonInput::child(where, k),
+                 "a keyframe [t, v] needs increasing finite times and a speed in [0, 1e4] m/s");
+      return std::nullopt;
+    }
+    keys.emplace_back(t, v);
+  }
+  if (!ok) {
+    in.problem(where,
+               "expected a speed in m/s or keyframes [[t, v], ...], found " + json_type_name(*it));
+    return std::nullopt;
+  }
+  bool flows = false;
+  for (const auto& [t, v] : keys) flows = flows || v > 0;
+  if (!flows) {
+    in.problem(where, "every keyframe's speed is 0: the emitter would never emit");
+    return std::nullopt;
+  }
+  return keys;
+}
+
+// The inner box of a container that holds `x`, if any.
+const ContainerDesc* container_holding(const SceneDescription& scene, const Eigen::Vector3d& x) {
+  for (const auto& c : scene.containers)
+    if ((x.array() > c.box.min.array()).all() && (x.array() < c.box.max.array()).all()) return &c;
+  return nullptr;
+}
+
+std::string text_of(const Eigen::Vector3d& x) {
+  std::ostringstream out;
+  out << "[" << x.x() << ", " << x.y() << ", " << x.z() << "]";
+  return out.str();
+}
+
+std::optional<EmitterEntry> read_emitter(JsonInput& in, const json& e, const std::string& path,
+                                         std::size_t index, const SceneDescription& scene) {
+  in.check_keys(e, path,
+                {"name", "material", "shape", "center", "direction", "radius", "size", "width_axis",
+                 "speed", "start", "end", "volume", "nozzle", "buffer"});
+  const double h = double(scene.world.spacing);
+  EmitterEntry entry;
+  EmitterDesc& d = entry.desc;
+  d.name = in.string(e, path, "name", false).value_or("emitter " + std::to_string(index));
+  d.spacing = h;
+  const auto material = material_of(in, e, path, "material", scene, ParticleType::Liquid, true);
+  const auto center = in.vec3(e, path, "center", true);
+  const auto direction = in.vec3(e, path, "direction", true);
+  const auto speed = read_speed(in, e, path);
+  const double start = in.number(e, path, "start", 0, 0, 1e7, false, "s");
+  const double end = in.number(e, path, "end", 1e7, 0, 1e7, false, "s");
+  if (end <= start) in.problem(JsonInput::child(path, "end"), "the end must come after the start");
+  const std::string shape = in.string(e, path, "shape", false).value_or("circle");
+  if (direction && !(direction->norm() > 0))
+    in.problem(JsonInput::child(path, "direction"), "the direction must not be zero");
+  if (!material || !center || !direction || !speed || !(direction->norm() > 0) || end <= start)
+    return std::nullopt;
+  const Material& mat = scene.materials[*material];
+  d.material = *material;
+  d.particle_mass = Real(mat.param("density") * h * h * h);
+  d.center = *center;
+  d.direction = direction->normalized();
+  d.speed = SpeedProfile(*speed, start, end);
+
+  // The opening's lattice, and the nozzle's rings around it (`layers` wide).
+  const auto width_axis = in.vec3(e, path, "width_axis", false);
+  const auto [e1, e2] = plane_axes(d.direction, width_axis);
+  d.width = e1;
+  d.height = e2;
+  d.buffer = in.number(e, path, "buffer", 2, 0, 100, false) * h;
+  std::function<bool(double, double, double)> inside;  // (u, v, grown by) -> in the shape
+  double reach = 0;                                    // largest |u|, |v| of the shape
+  double su = 0, sv = 0;  // the lattice's offset from the centre, in spacings
+  if (shape == "circle") {
+    const double r = in.number(e, path, "radius", 0, 0, 1e3, true, "m");
+    if (!(r > 0)) return std::nullopt;
+    inside = [r](double u, double v, double grow) {
+      return u * u + v * v <= (r + grow) * (r + grow) * (1 + 1e-12);
+    };
+    reach = r;
+    d.circle = true;
+    d.radius = r;
+  } else if (shape == "rectangle") {
+    const auto size = in.vec2(e, path, "size", true);
+    if (!size) return std::nullopt;
+    if (!((*size).array() > 0).all() || !((*size).array() < 1e3).all()) {
+      in.problem(JsonInput::child(path, "size"), "width and height must be in (0, 1e3) m");
+      return std::nullopt;
+    }
+    // Points per side: the lattice nearest the size (at least one), centred on `center`.
+    const double nu = std::max(1.0, std::round((*size)[0] / h));
+    const double nv = std::max(1.0, std::round((*size)[1] / h));
+    // An even count of points per side sits half a spacing off the centre.
+    su = std::fmod(nu, 2.0) == 0 ? 0.5 : 0.0;
+    sv = std::fmod(nv, 2.0) == 0 ? 0.5 : 0.0;
+    inside = [nu, nv, h](double u, double v, double grow) {
+      return std::abs(u) <= 0.5 * (nu - 1) * h + grow + 1e-9 * h &&
+             std::abs(v) <= 0.5 * (nv - 1) * h + grow + 1e-9 * h;
+    };
+    reach = 0.5 * std::max(nu, nv) * h;
+    d.circle = false;
+    d.half_width = 0.5 * (nu - 1) * h;
+    d.half_height = 0.5 * (nv - 1) * h;
+  } else {
+    in.problem(JsonInput::child(path, "shape"),
+               "unknown shape '" + shape + "' (allowed: 'circle', 'rectangle')");
+    return std::nullopt;
+  }
+  if (reach / h > 2000) {
+    in.problem(path, "the opening is more than 2000 spacings across");
+    return std::nullopt;
+  }
+  int layers = 2, length = 3;
+  if (auto it = e.find("nozzle"); it != e.end()) {
+    if (it->is_boolean()) {
+      if (!it->get<bool>()) layers = 0;
+    } else if (in.expect_object(*it, JsonInput::child(path, "nozzle"))) {
+      const std::string where = JsonInput::child(path, "nozzle");
+      in.check_keys(*it, where, {"layers", "length", "material"});
+      layers = int(in.number(*it, where, "layers", 2, 1, 5));
+      length = int(in.number(*it, where, "length", 3, 1, 50));
+    }
+  }
+  std::optional<MaterialId> nozzle_material;
+  if (layers > 0) {
+    const json nozzle = e.value("nozzle", json::object());
+    if (nozzle.is_object() && nozzle.contains("material")) {
+      nozzle_material = material_of(in, nozzle, JsonInput::child(path, "nozzle"), "material", scene,
+                                    ParticleType::Frozen, true);
+    } else {
+      for (std::size_t m = 0; m < scene.materials.size() && !nozzle_material; ++m)
+        if (scene.materials[m].type == ParticleType::Frozen) nozzle_material = MaterialId(m);
+      if (!nozzle_material)
+        in.problem(JsonInput::child(path, "nozzle"),
+                   "the nozzle's walls need a frozen material and the scene has none: add one, or "
+                   "set \"nozzle\": false");
+    }
+    if (!nozzle_material) return std::nullopt;
+    entry.nozzle_material = *nozzle_material;
+  }
+  const long long n = (long long)std::ceil(reach / h) + layers + 1;
+  for (long long j = -n; j <= n; ++j)
+    for (long long i = -n; i <= n; ++i) {
+      const double u = (double(i) + su) * h, v = (double(j) + sv) * h;
+      const Eigen::Vector3d offset = u * e1 + v * e2;
+      if (inside(u, v, 0)) {
+        d.opening.push_back(offset);
+      } else if (layers > 0 && inside(u, v, double(layers) * h)) {
+        for (int k = 0; k < length; ++k)
+          entry.nozzle.push_back(d.center + offset - double(k) * h * d.direction);
+      }
+    }
+  if (d.opening.empty()) {
+    in.problem(path, "the opening holds no lattice point at this particle spacing: make it wider");
+    return std::nullopt;
+  }
+  if (auto volume = e.find("volume"); volume != e.end()) {
+    const double v = in.number(e, path, "volume", 0, 0, 1e9, true, "m^3");
+    if (v > 0)
+      d.max_layers = std::uint64_t(std::ceil(v / (double(d.opening.size()) * h * h * h) - 1e-9));
+  }
+  // Where the liquid goes in: inside a container, clear of its walls and of the fluid blocks.
+  const Eigen::Vector3d ahead = d.center + 2 * h * d.direction;
+  if (!container_holding(scene, d.center)) {
+    in.problem(JsonInput::child(path, "center"), "the opening " + text_of(d.center) +
+                                                     " is not inside any container (inside a "
+                                                     "wall, or outside the scene)");
+    return std::nullopt;
+  }
+  if (!container_holding(scene, ahead)) {
+    in.problem(JsonInput::child(path, "direction"),
+               "the emitter points into a wall: two spacings ahead of the opening, " +
+                   text_of(ahead) + ", is outside the container");
+    return std::nullopt;
+  }
+  for (std::size_t b = 0; b < scene.fluid_blocks.size(); ++b) {
+    const Box& box = scene.fluid_blocks[b].box;
+    for (const auto& o : d.opening)
+      for (const Eigen::Vector3d& x : {Eigen::Vector3d(d.center + o), Eigen::Vector3d(ahead + o)})
+        if ((x.array() > box.min.array() - 0.5 * h).all() &&
+            (x.array() < box.max.array() + 0.5 * h).all()) {
+          in.problem(path, "the emitter's first layers overlap the liquid of fluid block " +
+                               std::to_string(b) + " at " + text_of(x));
+          return std::nullopt;
+        }
+  }
+  return entry;
+}
+
+// Calls read_one(element, path, index) for each element of the array `node` (each must be an
+// object); false when any element (or the array itself) was reported.
+template <class ReadOne>
+bool read_each(const json& node, const std::string& path, JsonInput& in, const char* what,
+               ReadOne&& read_one) {
+  if (!node.is_array()) {
+    in.problem(path,
+               std::string("expected an array of ") + what + ", found " + json_type_name(node));
+    return false;
+  }
+  bool ok = true;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string where = JsonInput::child(path, i);
+    ok = in.expect_object(node[i], where) && read_one(node[i], where, i) && ok;
+  }
+  return ok;
+}
+
+std::shared_ptr<const SceneSectionData> read_emitters(const json& node, const std::string& path,
+                                                      const SceneDescription& scene,
+                                                      JsonInput& in) {
+  if (!(scene.world.spacing > 0)) return nullptr;  // reported at /particle_spacing
+  auto data = std::make_shared<EmittersData>();
+  const bool ok = read_each(
+      node, path, in, "emitters", [&](const json& e, const std::string& where, std::size_t i) {
+        auto entry = read_emitter(in, e, where, i, scene);
+        if (!entry) return false;
+        for (const auto& other : data->emitters)
+          if (other.desc.name == entry->desc.name)
+            in.problem(JsonInput::child(where, "name"),
+                       "another emitter has the name '" + entry->desc.name + "'");
+        data->emitters.push_back(std::move(*entry));
+        return true;
+      });
+  if (!ok) return nullptr;
+  return data;
+}
+
+void build_emitters(World& world, const SceneDescription&, const SceneSectionData& section) {
+  const auto& data = static_cast<const EmittersData&>(section);
+  Particles& p = world.particles();
+  for (const auto& e : data.emitters) {
+    for (const auto& x : e.nozzle)
+      p.add(to_vec3(x), Vec3{}, Real(0), ParticleType::Frozen, e.nozzle_material);
+    world.add_source(std::make_unique<Emitter>(e.desc));
+  }
+}
+
+std::optional<SinkDesc> read_sink(JsonInput& in, const json& s, const std::string& where,
+                                  std::size_t index) {
+  in.check_keys(s, where, {"name", "min", "max", "point", "normal"});
+  SinkDesc sink;
+  sink.name = in.string(s, where, "name", false).value_or("sink " + std::to_string(index));
+  const bool is_box = s.contains("min") || s.contains("max");
+  if (is_box == (s.contains("point") || s.contains("normal"))) {
+    in.problem(where,
+               "a sink is a box (\"min\", \"max\") or a half-space (\"point\", "
+               "\"normal\"): give one of the two");
+    return std::nullopt;
+  }
+  if (is_box) {
+    const auto lo = in.vec3(s, where, "min", true), hi = in.vec3(s, where, "max", true);
+    if (!lo || !hi) return std::nullopt;
+    if (!(lo->array() < hi->array()).all()) {
+      in.problem(JsonInput::child(where, "max"), "max must exceed min on every axis");
+      return std::nullopt;
+    }
+    sink.box = Box{*lo, *hi};
+    return sink;
+  }
+  const auto point = in.vec3(s, where, "point", true), normal = in.vec3(s, where, "normal", true);
+  if (!point || !normal) return std::nullopt;
+  if (!(normal->norm() > 0)) {
+    in.problem(JsonInput::child(where, "normal"), "the normal must not be zero");
+    return std::nullopt;
+  }
+  sink.point = *point;
+  sink.normal = normal->normalized();
+  return sink;
+}
+
+std::shared_ptr<const SceneSectionData> read_sinks(const json& node, const std::string& path,
+                                                   const SceneDescription&, JsonInput& in) {
+  auto data = std::make_shared<SinksData>();
+  const bool ok = read_each(node, path, in, "sinks",
+                            [&](const json& s, const std::string& where, std::size_t i) {
+                              auto sink = read_sink(in, s, where, i);
+                              if (sink) data->sinks.push_back(*sink);
+                              return sink.has_value();
+                            });
+  if (!ok) return nullptr;
+  return data;
+}
+
+void build_sinks(World& world, const SceneDescription&, const SceneSectionData& section) {
+  for (const auto& s : static_cast<const SinksData&>(section).sinks)
+    world.add_source(std::make_unique<Sink>(s));
+}
+
+}  // namespace
+
+SceneSection emitters_scene_section() {
+  return {
+      "emitters",
+      "nozzles that pour liquid in, layer by layer at the particle spacing, at a speed that may "
+      "follow keyframes (docs/emitters.md)",
+      read_emitters, build_emitters};
+}
+
+SceneSection sinks_scene_section() {
+  return {"sinks", "boxes and half-spaces where liquid leaves the scene (docs/emitters.md)",
+          read_sinks, build_sinks};
+}
+
+void register_sources(Registry& registry) {
+  registry.add_scene_section(emitters_scene_section());
+  registry.add_scene_section(sinks_scene_section());
+}
+
+}  // namespace upf

@@ -1,0 +1,119 @@
+// Emitters and sinks from the command line (issue 40, docs/emitters.md): bad input is exit
+// code 2 naming the JSON path before anything is written; a pour resumed from a checkpoint
+// writes the same bytes as one never stopped; a split run is refused until emitters run on
+// ranks.
+#include <fstream>
+#include <iterator>
+
+#include "cli_support.h"
+
+namespace upf::cli_test {
+namespace {
+
+std::string contents(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+class EmittersCli : public Cli {
+ protected:
+  // A small tank with a round tap above an empty floor.
+  nlohmann::json pour() const {
+    return {{"name", "pour"},
+            {"particle_spacing", 0.04},
+            {"materials",
+             {{"water", {{"type", "liquid"}, {"density", 1000}}}, {"walls", {{"type", "frozen"}}}}},
+            {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {0.4, 0.6, 0.4}}}}},
+            {"emitters",
+             {{{"material", "water"},
+               {"radius", 0.06},
+               {"center", {0.2, 0.5, 0.2}},
+               {"direction", {0, -1, 0}},
+               {"speed", 1.5}}}},
+            {"sinks", {{{"min", {0.3, -1, -1}}, {"max", {1, 0.1, 1}}}}},
+            {"time", {{"end", 0.4}}},
+            {"output", {{"fps", 20}}}};
+  }
+};
+
+TEST_F(EmittersCli, BadEmittersAndSinksAreNamedByTheirJsonPath) {
+  auto with = [&](auto change) {
+    nlohmann::json doc = pour();
+    change(doc);
+    return doc;
+  };
+  expect_rejected(with([](auto& d) {
+                    d["emitters"][0]["center"] = {0.2, 0.5, 0.41};
+                  }),
+                  {":/emitters/0/center", "not inside any container"});
+  expect_rejected(with([](auto& d) {
+                    d["emitters"][0]["center"] = {0.35, 0.5, 0.2};
+                    d["emitters"][0]["direction"] = {1, 0, 0};
+                  }),
+                  {":/emitters/0/direction", "points into a wall"});
+  expect_rejected(with([](auto& d) {
+                    d["fluid_blocks"] = {
+                        {{"material", "water"}, {"min", {0, 0, 0}}, {"max", {0.4, 0.48, 0.4}}}};
+                  }),
+                  {":/emitters/0", "overlap the liquid of fluid block 0"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["radius"] = 0; }), {":/emitters/0/radius"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["speed"] = -1; }), {":/emitters/0/speed"});
+  expect_rejected(with([](auto& d) {
+                    d["emitters"][0]["speed"] = {{0, 0}, {1, 0}};
+                  }),
+                  {":/emitters/0/speed", "never emit"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["material"] = "walls"; }),
+                  {":/emitters/0/material", "must be liquid"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["material"] = "honey"; }),
+                  {":/emitters/0/material", "unknown material 'honey'"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["shape"] = "star"; }),
+                  {":/emitters/0/shape", "unknown shape"});
+  expect_rejected(with([](auto& d) {
+                    d["sinks"][0]["point"] = {0, 0, 0};
+                  }),
+                  {":/sinks/0", "a box"});
+  expect_rejected(with([](auto& d) {
+                    d["sinks"][0]["max"] = {0.2, 0.1, 1};
+                  }),
+                  {":/sinks/0/max", "must exceed min"});
+  // Nothing was written by any of them.
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(EmittersCli, AResumedPourWritesTheBytesOfOneNeverStopped) {
+  const std::string scene = write(pour());
+  const fs::path whole = dir_ / "whole", parts = dir_ / "parts";
+  ASSERT_EQ(run_upf("run " + scene + " -o " + whole.string() + " -q").code, 0);
+  ASSERT_EQ(
+      run_upf("run " + scene + " -o " + parts.string() + " --end 0.2 --checkpoint-every 0.1sim -q")
+          .code,
+      0);
+  const Result resumed = run_upf("run --resume " + parts.string() + " --end 0.4 -q");
+  ASSERT_EQ(resumed.code, 0) << resumed.output;
+  int frames = 0;
+  for (const auto& e : fs::directory_iterator(whole / "frames")) {
+    EXPECT_EQ(contents(e.path()), contents(parts / "frames" / e.path().filename()))
+        << e.path().filename();
+    ++frames;
+  }
+  EXPECT_GE(frames, 9);
+  EXPECT_EQ(contents(whole / "metrics.csv").substr(0, 200),
+            contents(parts / "metrics.csv").substr(0, 200));
+  EXPECT_NE(contents(whole / "metrics.csv").find("mass_in_kg,mass_out_kg"), std::string::npos);
+}
+
+#ifdef UPF_HAS_MPI
+TEST_F(EmittersCli, ASplitRunIsRefusedBeforeWriting) {
+  const fs::path out = dir_ / "out";
+  const Result r = run_shell(
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 "
+      "OMP_NUM_THREADS=1 timeout 120 mpirun --oversubscribe -n 2 " +
+      std::string(UPF_EXECUTABLE) + " run " + write(pour()) + " -q -o " + out.string());
+  EXPECT_NE(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("do not run split over MPI ranks yet"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out / "frames"));
+}
+#endif
+
+}  // namespace
+}  // namespace upf::cli_test

@@ -1,0 +1,182 @@
+// Liquid that enters and leaves (issue 40; solvers/sources/): an emitter's mass rate is
+// rho0 A v, exactly to within one layer, through ramps, stops and restarts; emitted minus removed
+// is what is there at every step; a tank fed by a nozzle fills at dL/dt = Q / A_tank (mass
+// conservation); and a pour is deterministic across thread counts and through a checkpoint.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "framework/core/state_stream.h"
+#include "framework/run/probes.h"
+#include "solvers/sources/emitter.h"
+#include "tests/physics/scene_helpers.h"
+#include "tests/physics/validation_record.h"
+
+namespace upf::testing {
+namespace {
+
+constexpr double kSpacing = 0.02;
+
+// A 0.2 x 0.2 m tank, 0.7 m tall, fed from above by a 0.1 x 0.1 m hose (25 lattice points).
+nlohmann::json tank_fed_by_a_hose(const nlohmann::json& speed) {
+  return {
+      {"name", "tank_fill"},
+      {"particle_spacing", kSpacing},
+      {"materials",
+       {{"water", {{"type", "liquid"}, {"density", 1000}, {"viscosity", 0.001}}},
+        {"walls", {{"type", "frozen"}}}}},
+      {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {0.2, 0.7, 0.2}}}}},
+      {"emitters",
+       {{{"name", "hose"},
+         {"material", "water"},
+         {"shape", "rectangle"},
+         {"size", {0.1, 0.1}},
+         {"center", {0.1, 0.6, 0.1}},
+         {"direction", {0, -1, 0}},
+         {"speed", speed}}}},
+      {"time", {{"end", 2.0}}},
+  };
+}
+
+std::size_t liquid_count(const World& w) {
+  return w.count(ParticleType::Liquid);
+}
+
+const Emitter& emitter_of(const World& w) {
+  return dynamic_cast<const Emitter&>(*w.sources().front());
+}
+
+// Reference: continuity at the nozzle, mdot = rho0 A v. Over any time, the emitted mass is
+// rho0 A D with D the integral of the speed; a layer is A h of it, so the count of particles is
+// (D / h + 1) per lattice point, less the fraction of the layer in progress: within one layer.
+TEST(Emitters, EmittedMassIsRho0AVTWithinOneLayerThroughRampsStopsAndRestarts) {
+  // Ramp up, hold, shut off, and restart faster.
+  const nlohmann::json speed = {{0.0, 0.0}, {0.1, 1.0},  {0.3, 1.0}, {0.31, 0.0},
+                                {0.5, 0.0}, {0.51, 2.0}, {0.7, 2.0}};
+  TestWorld t(tank_fed_by_a_hose(speed), 2);
+  const Emitter& hose = emitter_of(*t.world);
+  ASSERT_NEAR(hose.area(), 0.01, 1e-8);  // h is a float: 0.02 to 7 digits
+  const double rho0 = 1000, m = rho0 * kSpacing * kSpacing * kSpacing;
+  // D(t) of the profile above, in closed form (trapezoids).
+  auto travelled = [](double time) {
+    auto clip = [&](double a, double b) { return std::clamp(time, a, b) - a; };
+    const double ramp = clip(0.0, 0.1), hold = clip(0.1, 0.3), off = clip(0.3, 0.31);
+    const double up = clip(0.5, 0.51), fast = clip(0.51, 1e9);
+    return 0.5 * ramp * ramp / 0.1 + hold + (off - 0.5 * off * off / 0.01) + up * up / 0.01 +
+           2 * fast;
+  };
+  double worst_layers = 0;
+  std::size_t during_stop = 0;
+  while (t.world->time() < 0.8 - 1e-12) {
+    const double start = t.world->time();
+    t.world->step(t.world->next_time_step_until(0.8));
+    // The layers entered before this step: D at its start.
+    const double expected_mass = rho0 * hose.area() * travelled(start);
+    const double emitted_mass = double(liquid_count(*t.world)) * m;
+    const double layer_mass = rho0 * hose.area() * kSpacing;
+    worst_layers = std::max(worst_layers, std::abs(emitted_mass - expected_mass) / layer_mass);
+    // The spacing is a float: 1e-5 of a layer covers its rounding.
+    ASSERT_LE(emitted_mass - expected_mass, layer_mass * (1 + 1e-5)) << "t = " << start;
+    ASSERT_GE(emitted_mass - expected_mass, -1e-5 * layer_mass) << "t = " << start;
+    if (start > 0.32 && start < 0.5)
+      during_stop = std::max(during_stop, t.world->last_step().sources.added);
+  }
+  EXPECT_EQ(during_stop, 0u) << "the emitter emitted while its speed was 0";
+  EXPECT_GT(travelled(0.8), travelled(0.5) + 0.5) << "the restart emitted";
+  record_validation("emitted mass against rho0 A integral(v dt), worst over every step",
+                    "continuity at the nozzle, mdot = rho0 A v", "0 layers", "within 1 layer",
+                    worst_layers, "layers");
+}
+
+// Reference: mass balance. Liquid leaves through a sink in the floor region; at every step the
+// particles there are exactly those emitted minus those removed.
+TEST(Emitters, EmittedMinusRemovedIsWhatIsThereEveryStep) {
+  nlohmann::json doc = tank_fed_by_a_hose(1.5);
+  doc["sinks"] = {{{"name", "drain"}, {"min", {0, -1, 0}}, {"max", {0.2, 0.1, 0.2}}}};
+  TestWorld t(doc, 2);
+  std::size_t emitted = 0, removed = 0;
+  while (t.world->time() < 1.0 - 1e-12) {
+    t.world->step(t.world->next_time_step_until(1.0));
+    emitted += t.world->last_step().sources.added;
+    removed += t.world->last_step().sources.removed;
+    ASSERT_EQ(liquid_count(*t.world), emitted - removed) << "t = " << t.world->time();
+  }
+  EXPECT_GT(removed, 500u) << "the drain took liquid";
+  // Nothing below the drain's top stays (it is checked before each step).
+  double lowest = 1;
+  const Particles& p = t.world->particles();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.type[i] == ParticleType::Liquid) lowest = std::min(lowest, double(p.position[i].y));
+  EXPECT_GT(lowest, 0.05);
+}
+
+// Reference: volume conservation in a tank, dL/dt = Q / A_tank with Q = A_nozzle v. The level is
+// what a wave gauge reads (the "volume" height probe) in two corners away from the jet, and its
+// rate is the least-squares slope once the pool has formed.
+TEST(Emitters, ATankFedByAHoseFillsAtQOverItsArea) {
+  TestWorld t(tank_fed_by_a_hose(1.0), 2);
+  const double q = emitter_of(*t.world).area() * 1.0, tank_area = 0.2 * 0.2;
+  ProbeDesc gauge;
+  gauge.kind = ProbeKind::Height;
+  gauge.axis = 1;
+  gauge.method = ProbeMethod::Volume;
+  gauge.radius = 3 * kSpacing;
+  std::vector<double> times, levels;
+  while (t.world->time() < 1.6 - 1e-12) {
+    t.run_until(std::min(1.6, t.world->time() + 0.05));
+    if (t.world->time() < 0.8 - 1e-9) continue;
+    double level = 0;
+    for (const Eigen::Vector2d& corner :
+         {Eigen::Vector2d(0.04, 0.04), Eigen::Vector2d(0.16, 0.16)}) {
+      gauge.at = corner;
+      level += 0.5 * evaluate_probe(gauge, t.world->particles(), Real(kSpacing));
+    }
+    times.push_back(t.world->time());
+    levels.push_back(level);
+  }
+  const double n = double(times.size());
+  double st = 0, sl = 0, stt = 0, stl = 0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    st += times[k];
+    sl += levels[k];
+    stt += times[k] * times[k];
+    stl += times[k] * levels[k];
+  }
+  const double slope = (n * stl - st * sl) / (n * stt - st * st);
+  const double expected = q / tank_area;
+  record_validation("tank filling rate dL/dt (wave gauges in two corners, 0.8-1.6 s)",
+                    "volume conservation, dL/dt = Q / A_tank", "0.25 m/s", "within 3 %", slope,
+                    "m/s");
+  EXPECT_NEAR(slope, expected, 0.03 * expected);
+}
+
+// Reference: the determinism contract (DESIGN.md): the same bits on 1 and 2 threads, and through
+// a checkpoint taken mid-pour.
+TEST(Emitters, APourIsTheSameBitsOnAnyThreadCountAndThroughACheckpoint) {
+  nlohmann::json doc = tank_fed_by_a_hose(1.2);
+  doc["sinks"] = {{{"point", {0, 0.08, 0}}, {"normal", {0, -1, 0}}}};
+  TestWorld one(doc, 1), two(doc, 2);
+  one.run_until(0.4);  // both stop there: run_until splits what remains into equal steps
+  two.run_until(0.4);
+  StateWriter saved;
+  one.world->save_state(saved);
+  one.run_until(0.7);
+  two.run_until(0.7);
+  ASSERT_GT(liquid_count(*one.world), 200u);
+  EXPECT_EQ(
+      bitwise_differences(state_by_id(one.world->particles()), state_by_id(two.world->particles())),
+      0u);
+  TestWorld resumed(doc, 2);
+  StateReader in(saved.bytes(), "mid-pour");
+  resumed.world->restore_state(in);
+  resumed.run_until(0.7);
+  ASSERT_EQ(resumed.world->particles().size(), one.world->particles().size());
+  EXPECT_EQ(bitwise_differences(state_by_id(one.world->particles()),
+                                state_by_id(resumed.world->particles())),
+            0u);
+  EXPECT_EQ(resumed.world->particles().id_bound(), one.world->particles().id_bound());
+}
+
+}  // namespace
+}  // namespace upf::testing
