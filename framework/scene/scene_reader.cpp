@@ -519,7 +519,7 @@ void read_sections(JsonInput& in, const json& doc, const Registry& registry,
   }
   bool moving_sections = false;
   for (const auto& section : scene.sections)
-    moving_sections = moving_sections || section.data->estimated_particles() > 0;
+    moving_sections = moving_sections || section.data->moves();
   if (scene.fluid_blocks.empty() && !moving_sections && in.clean())
     in.problem("/fluid_blocks", "the scene has no fluid block: nothing would move");
 }

@@ -18,6 +18,9 @@ struct SceneSectionData {
   virtual ~SceneSectionData() = default;
   // Particles the section will add, for the memory estimate made before anything is built.
   virtual double estimated_particles() const { return 0; }
+  // Whether the section brings something that moves (a scene needs one): its particles, or
+  // liquid it pours in later (emitters).
+  virtual bool moves() const { return estimated_particles() > 0; }
 };
 
 struct SceneSection {

@@ -1,5 +1,6 @@
 #include "solvers/sources/sources_section.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -31,11 +32,19 @@ struct EmitterEntry {
 
 struct EmittersData : SceneSectionData {
   std::vector<EmitterEntry> emitters;
+  double end_time = 0;  // the scene's /time/end
+  // The nozzles' walls and the liquid poured by the scene's end: the memory check refuses a
+  // pour that would not fit before anything is written.
   double estimated_particles() const override {
     double n = 0;
-    for (const auto& e : emitters) n += double(e.nozzle.size());
+    for (const auto& e : emitters) {
+      const double layers = std::floor(e.desc.speed.distance(0, end_time) / e.desc.spacing) + 1;
+      n += double(e.nozzle.size()) +
+           std::min(layers, double(e.desc.max_layers)) * double(e.desc.opening.size());
+    }
     return n;
   }
+  bool moves() const override { return !emitters.empty(); }
 };
 
 struct SinksData : SceneSectionData {
@@ -310,6 +319,7 @@ std::shared_ptr<const SceneSectionData> read_emitters(const json& node, const st
                                                       JsonInput& in) {
   if (!(scene.world.spacing > 0)) return nullptr;  // reported at /particle_spacing
   auto data = std::make_shared<EmittersData>();
+  data->end_time = scene.world.time.end;
   const bool ok = read_each(
       node, path, in, "emitters", [&](const json& e, const std::string& where, std::size_t i) {
         auto entry = read_emitter(in, e, where, i, scene);
