@@ -230,30 +230,6 @@ TEST_F(Cli, ProbesAreSampledEveryStepOrAsThinnedOrAtFrames) {
   }
 }
 
-TEST_F(Cli, ARunIntoAnEarlierRunsDirectoryReplacesItsFiles) {
-  // Importers read every frame in frames/: a shorter second run must not leave the first run's
-  // later frames behind. The user's own files stay.
-  auto doc = sample();
-  const fs::path out = dir_ / "out";
-  doc["time"]["end"] = 0.2;
-  ASSERT_EQ(run_upf("run " + write(doc) + " --out " + out.string() + " --threads 2 -q").code, 0);
-  ASSERT_TRUE(fs::exists(out / "frames/frame_00006.vtp"));
-  std::ofstream(out / "notes.txt") << "mine";
-  std::ofstream(out / "frames" / "frame_notes.txt") << "mine too";
-  doc["time"]["end"] = 0.1;
-  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " --threads 2");
-  ASSERT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("replaced an earlier run there"), std::string::npos) << r.output;
-  EXPECT_TRUE(fs::exists(out / "frames/frame_00003.vtp"));
-  for (const char* stale : {"frames/frame_00004.vtp", "frames/frame_00006.vtp"})
-    EXPECT_FALSE(fs::exists(out / stale)) << stale;
-  EXPECT_TRUE(fs::exists(out / "notes.txt"));
-  EXPECT_TRUE(fs::exists(out / "frames" / "frame_notes.txt"));
-  std::ifstream pvd(out / "particles.pvd");
-  const std::string series((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(series.find("frame_00004"), std::string::npos);
-}
-
 TEST_F(Cli, OutputFieldNoSolverExportsStopsTheRunBeforeWriting) {
   // Which fields exist is known once the solvers have created theirs: the run checks the names
   // after preparing the world and before writing anything but the output directory.

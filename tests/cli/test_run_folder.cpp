@@ -1,4 +1,5 @@
-// A run owns its files and no others (issue 46): it records what it writes in
+// A run owns its files and no others (issue 46; it replaces the test of the pattern-based
+// clearing, Cli.ARunIntoAnEarlierRunsDirectoryReplacesItsFiles): it records what it writes in
 // upf_manifest.txt; a new run into the folder removes exactly what the previous run listed;
 // a non-empty folder that no run recorded is refused unless --overwrite, which replaces only the
 // names the run writes; links inside the folder are never followed; a scene's name is a name,
@@ -82,6 +83,7 @@ TEST_F(RunFolder, ANewRunRemovesExactlyWhatThePreviousRunWrote) {
   EXPECT_TRUE(fs::exists(d / "frames" / "frame_00002.vtp"));
   EXPECT_FALSE(fs::exists(d / "frames" / "frame_00003.vtp"));  // the earlier, longer run's
   EXPECT_FALSE(fs::exists(d / "frames" / "frame_00005.vtp"));
+  EXPECT_EQ(contents(d / "particles.pvd").find("frame_00003"), std::string::npos);
 }
 
 TEST_F(RunFolder, LinksInsideTheFolderAreNeverFollowed) {
