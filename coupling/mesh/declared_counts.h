@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -151,6 +152,33 @@ inline std::optional<Parsed> parse_off(const std::string& head, bool whole) {
   return p;
 }
 
+// The largest count a header we could not parse declares: in a PLY the third word of every
+// "element" line before "end_header"; in an OFF every whole number of its first two lines that
+// are not comments. 0 when there is none.
+inline std::uintmax_t largest_count(const std::string& head, bool ply) {
+  std::istringstream in(head);
+  std::string line;
+  std::uintmax_t largest = 0;
+  int lines = 0;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    if (ply && first == "end_header") break;
+    if (!ply && (first.empty() || first[0] == '#')) continue;
+    if (!ply && ++lines > 2) break;
+    std::vector<std::string> rest{first};
+    for (std::string w; words >> w;) rest.push_back(w);
+    for (std::size_t k = 0; k < rest.size(); ++k) {
+      if (ply && !(first == "element" && k == 2)) continue;
+      if (rest[k].empty() || rest[k].find_first_not_of("0123456789") != std::string::npos) continue;
+      largest = rest[k].size() > 19 ? std::numeric_limits<std::uintmax_t>::max()
+                                    : std::max<std::uintmax_t>(largest, std::stoull(rest[k]));
+    }
+  }
+  return largest;
+}
+
 }  // namespace declared_counts_detail
 
 // Throws InputError at `where` (see load_mesh), naming the file and the counts, when the
@@ -168,7 +196,17 @@ inline void require_counts_fit(const std::filesystem::path& file, const std::str
   std::ifstream(file, std::ios::binary).read(head.data(), std::streamsize(head.size()));
   const bool whole = head.size() == size;
   const auto parsed = extension == ".ply" ? d::parse_ply(head, whole) : d::parse_off(head, whole);
-  if (!parsed) return;
+  if (!parsed) {
+    // A header we do not understand may still carry a count assimp believes (the fuzzer found a
+    // mangled PLY header whose "element vertex 10000000" kept assimp busy past its timeout): no
+    // element takes less than a byte, so a count beyond the file's size is refused as well.
+    if (const auto count = d::largest_count(head, extension == ".ply"); count > size)
+      throw mesh_error(file.string(), where,
+                       "its header declares " + std::to_string(count) +
+                           " elements, more than the file's " + std::to_string(size) +
+                           " bytes can hold: the file is truncated or its counts are wrong");
+    return;
+  }
   double need = 0;
   std::string claims;
   for (const d::Claim& c : parsed->claims) {

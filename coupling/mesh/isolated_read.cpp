@@ -1,5 +1,6 @@
 #include "coupling/mesh/isolated_read.h"
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -45,6 +46,10 @@ std::vector<char> read_all(int fd) {
   // A crash in the child is the parent's to report: no handler (a sanitizer's, a fuzzer's) of
   // the parent's may turn it into a report of its own.
   for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(s, SIG_DFL);
+  // The reader dies with the process that waits for it: a parent killed mid-read (a timeout, a
+  // kill -9) must not leave assimp running with the parent's output streams open (ctest waited
+  // for such an orphan, which held the fuzz test's pipe).
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   StateWriter out;
   try {
     const TriangleMesh mesh = read();

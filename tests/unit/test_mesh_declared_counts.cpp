@@ -4,7 +4,6 @@
 // counts, to the last byte, still load.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -67,13 +66,22 @@ TEST_F(MeshDeclaredCounts, AsciiPlyClaimingTenMillionElementsIsRefusedAtOnce) {
   // The file: a tetrahedron's worth of data under a header claiming 10^7 of each.
   const fs::path file =
       write("huge.ply", ascii_ply("10000000", "10000000") + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-  const auto start = std::chrono::steady_clock::now();
   const std::string text = input_error_text([&] { load_mesh(file, {}, "/bodies/0/mesh"); });
-  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
   for (const std::string& needle :
        {std::string("/bodies/0/mesh"), file.string(),
         std::string("10000000 vertex and 10000000 face"), std::string("follow the header")})
     EXPECT_NE(text.find(needle), std::string::npos) << needle << "\n" << text;
+}
+
+TEST_F(MeshDeclaredCounts, AMangledHeaderWithAHugeCountIsRefusedToo) {
+  // Found by fuzz_mesh: a PLY header too mangled to parse ("property list uc", an OFF line, binary
+  // bytes) that still says "element vertex 10000000"; assimp believed it and ran past the
+  // fuzzer's 20 s timeout. No element takes less than a byte of a 197-byte file.
+  const fs::path file =
+      fs::path(UPF_SOURCE_DIR) / "tests" / "data" / "meshes" / "mangled_header_huge_count.ply";
+  const std::string text = input_error_text([&] { load_mesh(file, {}, "/bodies/0/mesh"); });
+  EXPECT_NE(text.find("declares 10000000 elements, more than the file's"), std::string::npos)
+      << text;
 }
 
 TEST_F(MeshDeclaredCounts, CountsBeyondEveryIntegerAreRefused) {
