@@ -180,6 +180,13 @@ TEST_F(MeshLoadingErrors, FileThatCrashesAssimpIsAnError) {
   expect_error(test_mesh("assimp_segv.off"), "crashed on it (signal 11");
 }
 
+// Found by fuzz_mesh on 2026-12-05: a 308-byte PLY with a mangled header on which assimp's reader
+// never finishes. The reader is stopped after its time limit (5 s for a small file) and the
+// file is named.
+TEST_F(MeshLoadingErrors, FileThatAssimpNeverFinishesIsAnError) {
+  expect_error(test_mesh("assimp_loop.ply"), "did not finish within 5 s");
+}
+
 TEST_F(MeshLoadingErrors, NoFacesIsEmpty) {
   expect_error(test_mesh("empty.obj"), "contains no triangles");
 }
