@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "framework/core/errors.h"
+#include "framework/core/fnv1a.h"
 #include "framework/core/real.h"
 #include "framework/output/atomic_file.h"
 
@@ -17,15 +18,6 @@ namespace upf {
 namespace {
 
 constexpr char kMagic[8] = {'U', 'P', 'F', 'C', 'K', 'P', 'T', '\n'};
-
-std::uint64_t fnv1a(const std::vector<char>& bytes, std::size_t from) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (std::size_t i = from; i < bytes.size(); ++i) {
-    h ^= std::uint8_t(bytes[i]);
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 }  // namespace
 
@@ -38,7 +30,7 @@ void write_checkpoint(const std::filesystem::path& path, const std::vector<char>
   header.put(kCheckpointFormat);
   header.put_string(checkpoint_build_id());
   header.put(std::uint64_t(payload.size()));
-  header.put(fnv1a(payload, 0));
+  header.put(fnv1a(payload.data(), payload.size()));
   write_file_atomically(path, [&](std::ostream& out) {
     out.write(kMagic, sizeof kMagic);
     out.write(header.bytes().data(), std::streamsize(header.bytes().size()));
@@ -119,7 +111,7 @@ StateReader read_checkpoint(const std::filesystem::path& path) {
   if (::lseek(file.fd, off_t(payload_at), SEEK_SET) != off_t(payload_at) ||
       !read_exactly(file.fd, payload.data(), payload.size()))
     throw InputError(name, "cannot read the checkpoint's payload (it changed while read?)");
-  if (fnv1a(payload, 0) != checksum)
+  if (fnv1a(payload.data(), payload.size()) != checksum)
     throw InputError(name, "checksum mismatch: the checkpoint is damaged");
   return StateReader(std::move(payload), name);
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "framework/core/fnv1a.h"
+
 namespace upf {
 
 namespace {
@@ -15,22 +17,6 @@ bool finite(const Vec3& v) {
 std::string at(std::size_t i, const Particles& p) {
   return " (particle " + std::to_string(i) + ", id " + std::to_string(p.id[i]) + ")";
 }
-
-class Fnv1a {
- public:
-  template <class T>
-  void add(const T& value) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
-    for (std::size_t k = 0; k < sizeof(T); ++k) {
-      hash_ ^= bytes[k];
-      hash_ *= 1099511628211ull;
-    }
-  }
-  std::uint64_t value() const { return hash_; }
-
- private:
-  std::uint64_t hash_ = 14695981039346656037ull;
-};
 
 }  // namespace
 

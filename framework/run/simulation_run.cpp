@@ -8,6 +8,7 @@
 
 #include "framework/checkpoint/checkpoint_file.h"
 #include "framework/core/errors.h"
+#include "framework/core/fnv1a.h"
 #include "framework/core/state_stream.h"
 #include "framework/core/stopwatch.h"
 #include "framework/output/atomic_file.h"
@@ -31,12 +32,7 @@ std::string read_header(StateReader& in) {
 
 // What names the scene in a checkpoint: FNV-1a 64 of the scene's text as the run was given it.
 std::uint64_t scene_identity(const std::string& scene_text) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (const char c : scene_text) {
-    h ^= std::uint8_t(c);
-    h *= 1099511628211ull;
-  }
-  return h;
+  return fnv1a(scene_text.data(), scene_text.size());
 }
 
 // After the header: the scene's identity, checked before the world is touched.

@@ -15,14 +15,18 @@ bool Sink::contains(const Eigen::Vector3d& x) const {
 }
 
 SourceChange Sink::apply(Particles& particles, double /*time*/, double /*dt*/) {
+  // Looked at before every step: the flags' storage is kept, and the arrays are only compacted
+  // when something goes.
   SourceChange change;
-  std::vector<std::uint8_t> doomed(particles.size(), 0);
+  doomed_.assign(particles.size(), 0);
+  std::size_t going = 0;
   for (std::size_t i = 0; i < particles.size(); ++i)
     if (particles.type[i] == ParticleType::Liquid && contains(to_eigen(particles.position[i]))) {
-      doomed[i] = 1;
+      doomed_[i] = 1;
       change.mass_removed += double(particles.mass[i]);
+      ++going;
     }
-  change.removed = particles.remove(doomed);
+  if (going > 0) change.removed = particles.remove(doomed_);
   return change;
 }
 

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "framework/scene/scene.h"
 #include "framework/world/particle_source.h"
@@ -30,6 +31,7 @@ class Sink : public ParticleSource {
 
  private:
   SinkDesc desc_;
+  std::vector<std::uint8_t> doomed_;  // apply()'s flags, kept between steps
 };
 
 }  // namespace upf
