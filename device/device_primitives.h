@@ -14,6 +14,7 @@
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/transform_reduce.h>
 
+#include "framework/core/fixed_point_term.h"
 #include "framework/core/vec3.h"
 #include "framework/executors/particle_range.h"
 
@@ -110,8 +111,9 @@ struct RangeValueAsFixedPoint {
   Value value;
   ParticleRange range;
   double scale;
+  double limit;
   UPF_HD std::int64_t operator()(std::size_t k) const {
-    return static_cast<std::int64_t>(nearbyint(double(value(range[k])) * scale));
+    return fixed_point_term(double(value(range[k])), scale, limit);
   }
 };
 
@@ -123,7 +125,8 @@ double fixed_point_sum(ParticleRange range, const Value& value, int fraction_bit
   const std::int64_t total = thrust::transform_reduce(
       Backend::policy(), thrust::counting_iterator<std::size_t>(0),
       thrust::counting_iterator<std::size_t>(range.size),
-      RangeValueAsFixedPoint<Value>{value, range, scale}, std::int64_t(0), Plus{});
+      RangeValueAsFixedPoint<Value>{value, range, scale, fixed_point_term_limit(range.size)},
+      std::int64_t(0), Plus{});
   return double(total) / scale;
 }
 

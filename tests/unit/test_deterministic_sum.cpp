@@ -106,6 +106,24 @@ TEST(DeterministicSum, FixedPointIsExactForRepresentableValues) {
   EXPECT_EQ(from_float, 1027.375);
 }
 
+// A hostile checkpoint can hold finite values whose error terms overflow 64-bit fixed point
+// (ASan+UBSan's checkpoint fuzzer found 9.7e33): they saturate, NaN upwards, so the sum reads as
+// huge (a stopping test fails) instead of converting out of range, and it stays order-free.
+TEST(DeterministicSum, FixedPointSaturatesHugeAndNotFiniteTerms) {
+  const std::vector<double> values = {1.0, 9.7e33, std::nan(""), -1e300, 2.5};
+  const auto sum = [&](int threads) {
+    return fixed_point_sum(CpuExecutor(threads), values.size(),
+                           [&](std::size_t i) { return values[i]; });
+  };
+  const double limit = fixed_point_term_limit(values.size()) / 4294967296.0;  // in value units
+  EXPECT_DOUBLE_EQ(sum(1), limit + 1.0 + 2.5);  // huge + NaN - huge: one limit left
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(sum(1)), std::bit_cast<std::uint64_t>(sum(2)));
+  const std::vector<double> all_nan(8, std::nan(""));
+  EXPECT_GT(
+      fixed_point_sum(CpuExecutor(2), all_nan.size(), [&](std::size_t i) { return all_nan[i]; }),
+      1e6);
+}
+
 TEST(DeterministicSum, BlockSumSameBitsForAnyThreadCount) {
   const std::vector<double> v = spread_values(kCount, 5);
   auto sum = [&](int threads) {

@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "framework/core/fixed_point_term.h"
 #include "framework/executors/particle_stage.h"
 #include "framework/executors/rank_collectives.h"
 
@@ -79,16 +80,16 @@ class CpuExecutor {
 
   // Sum of value(i) over `range`, exact in fixed point with `fraction_bits` bits after the binary
   // point, so any order of additions gives the same bits: for sums that steer control flow (the
-  // PCISPH stopping test). Values must satisfy |value| * 2^fraction_bits * size < 2^63.
+  // PCISPH stopping test). A term beyond fixed_point_term_limit (or NaN) saturates there.
   template <ParticleValue Value>
   double fixed_point_sum(ParticleRange range, const Value& value, int fraction_bits = 32) const {
     const double scale = std::ldexp(1.0, fraction_bits);
+    const double limit = fixed_point_term_limit(range.size);
     const std::int64_t count = static_cast<std::int64_t>(range.size);
     std::int64_t total = 0;
 #pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threads_)
     for (std::int64_t k = 0; k < count; ++k)
-      total +=
-          static_cast<std::int64_t>(std::nearbyint(double(value(range[std::size_t(k)])) * scale));
+      total += fixed_point_term(double(value(range[std::size_t(k)])), scale, limit);
     if (collectives_) total = collectives_->sum(total);
     return double(total) / scale;
   }
