@@ -37,6 +37,7 @@ class MpiDomain final : public ParticleDomain {
   void distribute(Particles& particles, CouplingArrays& coupling) override;
   void exchange(std::uint64_t step) override;
   void drop_ghosts() override;
+  bool owns(const Vec3& x) const override { return rcb_->owner(x) == rank_; }
   void gather(const Particles& owned, Particles& whole) const override;
   const std::vector<std::vector<std::uint32_t>>& departed() const override { return departed_; }
   std::vector<std::uint8_t> exchange_bytes(

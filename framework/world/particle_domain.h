@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "framework/core/vec3.h"
 #include "framework/executors/rank_collectives.h"
 
 namespace upf {
@@ -39,6 +40,8 @@ class ParticleDomain : public RankCollectives {
   virtual void exchange(std::uint64_t step) = 0;
   // End of a step: the ghosts go.
   virtual void drop_ghosts() = 0;
+  // Whether x lies in this rank's domain (an emitted particle stays on the rank that owns it).
+  virtual bool owns(const Vec3& x) const = 0;
   // Rank 0 receives every rank's owned particles sorted by id; the other ranks get none.
   virtual void gather(const Particles& owned, Particles& whole) const = 0;
   // The stable ids of the particles the last exchange moved from this rank, by destination rank:

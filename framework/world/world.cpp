@@ -69,11 +69,24 @@ void World::apply_sources(double dt) {
   // the pipeline's arrays take the new count as they take any host edit.
   Particles& p = particles();
   for (const auto& s : sources_) {
+    const std::size_t before = p.size();
     const SourceChange c = s->apply(p, time_, dt);
-    sources_done_.added += c.added;
+    // Split over ranks, every rank runs every source alike: an emitter adds its whole layer
+    // everywhere, so the id counter stays the same on every rank, and each rank keeps the new
+    // particles its domain owns. Sinks take what each rank owns.
+    if (domain_ && p.size() > before) {
+      std::vector<std::uint8_t> elsewhere(p.size(), 0);
+      for (std::size_t i = before; i < p.size(); ++i) elsewhere[i] = !domain_->owns(p.position[i]);
+      p.remove(elsewhere);
+    }
+    sources_done_.added += c.added;  // an emitter's own count: the whole layer, on every rank
     sources_done_.removed += c.removed;
     sources_done_.mass_added += c.mass_added;
     sources_done_.mass_removed += c.mass_removed;
+  }
+  if (domain_) {
+    sources_done_.removed = executor_.total(sources_done_.removed);
+    sources_done_.mass_removed = domain_->sum_of_doubles(sources_done_.mass_removed);
   }
 }
 
@@ -224,10 +237,6 @@ void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
                      "a device pipeline runs on one rank: run it without mpirun -n, or run the "
                      "ranks on the CPU");
   if (domain_) throw std::logic_error("World::set_domain() may run once");
-  if (domain && domain->ranks() > 1 && !sources_.empty())
-    throw InputError("mpirun -n " + std::to_string(domain->ranks()),
-                     "emitters and sinks (\"" + std::string(sources_.front()->name()) +
-                         "\") do not run split over MPI ranks yet: run the scene on one rank");
   if (domain && domain->ranks() > 1)
     for (const auto& s : solvers_)
       if (const std::string why = s->cannot_split(); !why.empty())
