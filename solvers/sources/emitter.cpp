@@ -49,6 +49,14 @@ SourceChange Emitter::apply(Particles& particles, double time, double /*dt*/) {
   }
   if (due <= layers_) return change;
   const std::uint64_t per_layer = desc_.opening.size();
+  if (due > desc_.budget_layers)
+    throw InputError(desc_.budget_where,
+                     "emitter '" + desc_.name + "' reached its max_particles (" +
+                         std::to_string(desc_.budget_layers * per_layer) + " particles, " +
+                         std::to_string(desc_.budget_layers) +
+                         " layers) at t = " + std::to_string(time) +
+                         " s: the run stops here, the frames written so far are kept. Raise "
+                         "max_particles, or set at_limit \"close\" to stop the emitter instead");
   const std::uint64_t new_ids = (due - layers_) * per_layer;
   if (new_ids > std::uint64_t(std::numeric_limits<ParticleId>::max() - particles.id_bound()))
     throw InputError(desc_.name,

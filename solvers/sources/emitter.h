@@ -43,8 +43,13 @@ struct EmitterDesc {
   double radius = 0, half_width = 0, half_height = 0;
   double buffer = 0;  // how far ahead of the opening the inflow buffer reaches (m)
   SpeedProfile speed;
-  // At most this many layers (a volume to emit); the largest integer: no limit.
+  // At most this many layers (a volume to emit, a budget that closes it); the largest integer:
+  // no limit.
   std::uint64_t max_layers = std::numeric_limits<std::uint64_t>::max();
+  // A budget that must not be passed: a layer beyond `budget_layers` ends the run with an
+  // InputError at `budget_where` (the scene's max_particles) instead.
+  std::uint64_t budget_layers = std::numeric_limits<std::uint64_t>::max();
+  std::string budget_where;
 };
 
 class Emitter : public ParticleSource {

@@ -15,7 +15,7 @@
 #include "framework/solver/registry.h"
 #include "framework/world/world.h"
 #include "solvers/sources/emitter.h"
-#include "solvers/sources/sink.h"
+#include "solvers/sources/json_array.h"
 
 namespace upf {
 
@@ -45,10 +45,6 @@ struct EmittersData : SceneSectionData {
     return n;
   }
   bool moves() const override { return !emitters.empty(); }
-};
-
-struct SinksData : SceneSectionData {
-  std::vector<SinkDesc> sinks;
 };
 
 // The material named at object[key], if it exists and has particles of `type`; else a problem.
@@ -142,11 +138,55 @@ std::string text_of(const Eigen::Vector3d& x) {
   return out.str();
 }
 
+// "max_particles" and "at_limit": the most particles the emitter may add (whole layers). With
+// "close" it stops there, as SPlisHSPlasH's emitters do; with "error" (the default) a pour that
+// would pass it by /time/end is refused here, and one that passes it later (a longer --end)
+// stops the run there with the frames kept.
+void read_particle_budget(JsonInput& in, const json& e, const std::string& path,
+                          const SceneDescription& scene, EmitterDesc& d) {
+  const double end_time = scene.world.time.end;
+  const std::string where = JsonInput::child(path, "max_particles");
+  if (!e.contains("max_particles")) {
+    if (e.contains("at_limit"))
+      in.problem(JsonInput::child(path, "at_limit"), "at_limit needs max_particles");
+    return;
+  }
+  const double most = in.number(e, path, "max_particles", 1, 1, 4.0e9);
+  const std::string at_limit = in.string(e, path, "at_limit", false).value_or("error");
+  const double per_layer = double(d.opening.size());
+  const auto layers = std::uint64_t(std::floor(most / per_layer));
+  if (layers == 0) {
+    in.problem(where, "max_particles " + std::to_string(std::uint64_t(most)) +
+                          " is less than one layer of this opening (" +
+                          std::to_string(d.opening.size()) + " particles)");
+    return;
+  }
+  if (at_limit == "close") {
+    d.max_layers = std::min(d.max_layers, layers);
+  } else if (at_limit == "error") {
+    d.budget_layers = layers;
+    d.budget_where = scene.source.string() + ":" + where;
+    const double poured =
+        std::min(std::floor(d.speed.distance(0, end_time) / d.spacing) + 1, double(d.max_layers));
+    if (poured > double(layers))
+      in.problem(where, "the pour until /time/end (" + std::to_string(end_time) + " s) adds " +
+                            std::to_string(std::uint64_t(poured * per_layer)) +
+                            " particles, more than max_particles " +
+                            std::to_string(std::uint64_t(most)) +
+                            ": raise it, pour less (end, volume), or set at_limit \"close\" to "
+                            "stop the emitter at the limit");
+  } else {
+    in.problem(JsonInput::child(path, "at_limit"),
+               "unknown at_limit '" + at_limit + "' (allowed: \"error\", \"close\")");
+  }
+}
+
 std::optional<EmitterEntry> read_emitter(JsonInput& in, const json& e, const std::string& path,
                                          std::size_t index, const SceneDescription& scene) {
-  in.check_keys(e, path,
-                {"name", "material", "shape", "center", "direction", "radius", "size", "width_axis",
-                 "speed", "start", "end", "volume", "nozzle", "buffer"});
+  in.check_keys(
+      e, path,
+      {"name", "material", "shape", "center", "direction", "radius", "size", "width_axis", "speed",
+       "start", "end", "volume", "nozzle", "buffer", "max_particles", "at_limit"});
   const double h = double(scene.world.spacing);
   EmitterEntry entry;
   EmitterDesc& d = entry.desc;
@@ -268,6 +308,7 @@ std::optional<EmitterEntry> read_emitter(JsonInput& in, const json& e, const std
     if (v > 0)
       d.max_layers = std::uint64_t(std::ceil(v / (double(d.opening.size()) * h * h * h) - 1e-9));
   }
+  read_particle_budget(in, e, path, scene, d);
   // Where the liquid goes in: inside a container, clear of its walls and of the fluid blocks.
   const Eigen::Vector3d ahead = d.center + 2 * h * d.direction;
   if (!container_holding(scene, d.center)) {
@@ -294,24 +335,6 @@ std::optional<EmitterEntry> read_emitter(JsonInput& in, const json& e, const std
         }
   }
   return entry;
-}
-
-// Calls read_one(element, path, index) for each element of the array `node` (each must be an
-// object); false when any element (or the array itself) was reported.
-template <class ReadOne>
-bool read_each(const json& node, const std::string& path, JsonInput& in, const char* what,
-               ReadOne&& read_one) {
-  if (!node.is_array()) {
-    in.problem(path,
-               std::string("expected an array of ") + what + ", found " + json_type_name(node));
-    return false;
-  }
-  bool ok = true;
-  for (std::size_t i = 0; i < node.size(); ++i) {
-    const std::string where = JsonInput::child(path, i);
-    ok = in.expect_object(node[i], where) && read_one(node[i], where, i) && ok;
-  }
-  return ok;
 }
 
 std::shared_ptr<const SceneSectionData> read_emitters(const json& node, const std::string& path,
@@ -345,57 +368,6 @@ void build_emitters(World& world, const SceneDescription&, const SceneSectionDat
   }
 }
 
-std::optional<SinkDesc> read_sink(JsonInput& in, const json& s, const std::string& where,
-                                  std::size_t index) {
-  in.check_keys(s, where, {"name", "min", "max", "point", "normal"});
-  SinkDesc sink;
-  sink.name = in.string(s, where, "name", false).value_or("sink " + std::to_string(index));
-  const bool is_box = s.contains("min") || s.contains("max");
-  if (is_box == (s.contains("point") || s.contains("normal"))) {
-    in.problem(where,
-               "a sink is a box (\"min\", \"max\") or a half-space (\"point\", "
-               "\"normal\"): give one of the two");
-    return std::nullopt;
-  }
-  if (is_box) {
-    const auto lo = in.vec3(s, where, "min", true), hi = in.vec3(s, where, "max", true);
-    if (!lo || !hi) return std::nullopt;
-    if (!(lo->array() < hi->array()).all()) {
-      in.problem(JsonInput::child(where, "max"), "max must exceed min on every axis");
-      return std::nullopt;
-    }
-    sink.box = Box{*lo, *hi};
-    return sink;
-  }
-  const auto point = in.vec3(s, where, "point", true), normal = in.vec3(s, where, "normal", true);
-  if (!point || !normal) return std::nullopt;
-  if (!(normal->norm() > 0)) {
-    in.problem(JsonInput::child(where, "normal"), "the normal must not be zero");
-    return std::nullopt;
-  }
-  sink.point = *point;
-  sink.normal = normal->normalized();
-  return sink;
-}
-
-std::shared_ptr<const SceneSectionData> read_sinks(const json& node, const std::string& path,
-                                                   const SceneDescription&, JsonInput& in) {
-  auto data = std::make_shared<SinksData>();
-  const bool ok = read_each(node, path, in, "sinks",
-                            [&](const json& s, const std::string& where, std::size_t i) {
-                              auto sink = read_sink(in, s, where, i);
-                              if (sink) data->sinks.push_back(*sink);
-                              return sink.has_value();
-                            });
-  if (!ok) return nullptr;
-  return data;
-}
-
-void build_sinks(World& world, const SceneDescription&, const SceneSectionData& section) {
-  for (const auto& s : static_cast<const SinksData&>(section).sinks)
-    world.add_source(std::make_unique<Sink>(s));
-}
-
 }  // namespace
 
 SceneSection emitters_scene_section() {
@@ -404,11 +376,6 @@ SceneSection emitters_scene_section() {
       "nozzles that pour liquid in, layer by layer at the particle spacing, at a speed that may "
       "follow keyframes (docs/emitters.md)",
       read_emitters, build_emitters};
-}
-
-SceneSection sinks_scene_section() {
-  return {"sinks", "boxes and half-spaces where liquid leaves the scene (docs/emitters.md)",
-          read_sinks, build_sinks};
 }
 
 void register_sources(Registry& registry) {

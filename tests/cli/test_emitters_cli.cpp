@@ -75,6 +75,17 @@ TEST_F(EmittersCli, BadEmittersAndSinksAreNamedByTheirJsonPath) {
                     d["sinks"][0]["max"] = {0.2, 0.1, 1};
                   }),
                   {":/sinks/0/max", "must exceed min"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["max_particles"] = 60; }),
+                  {":/emitters/0/max_particles", "adds 144 particles, more than max_particles 60"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["max_particles"] = 3; }),
+                  {":/emitters/0/max_particles", "less than one layer", "(9 particles)"});
+  expect_rejected(with([](auto& d) {
+                    d["emitters"][0]["max_particles"] = 60;
+                    d["emitters"][0]["at_limit"] = "stop";
+                  }),
+                  {":/emitters/0/at_limit", "unknown at_limit 'stop'"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["at_limit"] = "close"; }),
+                  {":/emitters/0/at_limit", "needs max_particles"});
   // Nothing was written by any of them.
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
@@ -99,6 +110,36 @@ TEST_F(EmittersCli, AResumedPourWritesTheBytesOfOneNeverStopped) {
   EXPECT_EQ(contents(whole / "metrics.csv").substr(0, 200),
             contents(parts / "metrics.csv").substr(0, 200));
   EXPECT_NE(contents(whole / "metrics.csv").find("mass_in_kg,mass_out_kg"), std::string::npos);
+}
+
+// A particle budget: "close" stops the emitter at the last whole layer within it and the run
+// goes on; "error" passed only by a longer run than the scene's (--end) stops that run at the
+// layer that would pass it, exit code 2 naming the scene's key, with the frames so far kept.
+TEST_F(EmittersCli, AParticleBudgetClosesTheEmitterOrStopsTheRunAsAsked) {
+  nlohmann::json doc = pour();
+  doc.erase("sinks");
+  doc["emitters"][0]["max_particles"] = 60;  // 6 layers of 9
+  doc["emitters"][0]["at_limit"] = "close";
+  const fs::path closed = dir_ / "closed";
+  const Result c = run_upf("run " + write(doc) + " -q -o " + closed.string());
+  ASSERT_EQ(c.code, 0) << c.output;
+  const nlohmann::json summary = nlohmann::json::parse(contents(closed / "summary.json"));
+  EXPECT_EQ(summary["particles"]["liquid"], 54) << summary.dump();
+
+  doc["emitters"][0].erase("at_limit");  // "error"
+  doc["time"]["end"] = 0.1;              // 36 particles by then: within the budget
+  const fs::path stopped = dir_ / "stopped";
+  const std::string scene = write(doc);
+  ASSERT_EQ(run_upf("run " + scene + " -q -o " + stopped.string()).code, 0);
+  const Result r = run_upf("run --resume " + stopped.string() + " --end 0.4 -q");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find(":/emitters/0/max_particles: emitter 'emitter 0' reached its "
+                          "max_particles (54 particles, 6 layers) at t = 0.16"),
+            std::string::npos)
+      << r.output;
+  int frames = 0;
+  for (const auto& e : fs::directory_iterator(stopped / "frames")) frames += e.is_regular_file();
+  EXPECT_GE(frames, 4) << "the frames up to the stop are kept";
 }
 
 #ifdef UPF_HAS_MPI
