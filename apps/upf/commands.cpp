@@ -17,7 +17,7 @@
 #include "framework/compare/comparison.h"
 #include "framework/compare/report_table.h"
 #include "framework/core/errors.h"
-#include "framework/output/liquid_surface.h"
+#include "framework/output/vdb_frame_writers.h"
 #include "framework/run/output_fields.h"
 #include "framework/run/simulation_run.h"
 #include "framework/scene/scene_builder.h"
@@ -100,7 +100,7 @@ int run_command(const RunArgs& args) {
     options.checkpoint = parse_checkpoint_every(run.checkpoint_every);
   options.checkpoint_header = to_header(run);
   options.scene_text = run.scene_text;
-  options.surface_mesher = run_surface_mesher;
+  options.vdb_writers = vdb_frame_writers();
   options.resume = !args.resume.empty();
   options.overwrite = args.overwrite;
   // Not kept in the checkpoint: every device gives the same bits, so a run may resume on another.
@@ -284,7 +284,7 @@ CompareOptions split_options(const ComparePlanFile& plan, const CompareArgs& arg
             std::to_string(kMaxThreads));
   CompareOptions options;
   options.out_dir = args.out_dir;
-  options.surface_mesher = run_surface_mesher;
+  options.vdb_writers = vdb_frame_writers();
   options.threads = args.threads > 0 ? args.threads : plan.threads;
   options.end_time = plan.end_time;
   options.write_frames = plan.write_frames;
@@ -404,7 +404,7 @@ int compare_command(const CompareArgs& args) {
 
   CompareOptions options;
   options.out_dir = args.out_dir;
-  options.surface_mesher = run_surface_mesher;
+  options.vdb_writers = vdb_frame_writers();
   options.threads = args.threads;
   options.end_time = args.end_time;
   options.write_frames = !args.no_frames;

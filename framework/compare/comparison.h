@@ -48,7 +48,7 @@ struct Comparison {
 
 struct CompareOptions {
   std::filesystem::path out_dir = "out/compare";
-  SurfaceMesher surface_mesher;  // for scenes with the "surface" format (see RunOptions)
+  VdbFrameWriters vdb_writers;   // for the "surface" and "vdb_points" formats (see RunOptions)
   int threads = 0;               // the same for every run; 0: OpenMP's default
   std::optional<double> end_time;
   bool write_frames = true;

@@ -1,5 +1,7 @@
 #include "framework/run/frame_writer.h"
 
+#include <tuple>
+
 #include <cstdio>
 
 #include "framework/core/errors.h"
@@ -24,28 +26,33 @@ std::string frame_file(const char* pattern, int frame) {
 
 FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
                          std::vector<std::string> fields, bool enabled, const World& world,
-                         std::size_t frozen_count, SurfaceMesher surface_mesher, bool resuming)
+                         std::size_t frozen_count, VdbFrameWriters vdb, bool resuming)
     : out_dir_(out_dir),
       fields_(std::move(fields)),
       vtp_(enabled && scene.output.vtp),
       ply_(enabled && scene.output.ply),
       surface_(enabled && scene.output.surface),
+      vdb_points_(enabled && scene.output.vdb_points),
+      vdb_compression_(scene.output.vdb_compression),
       compression_(scene.output.compress ? vtk_xml::Compression::zlib : vtk_xml::Compression::none),
       vtp_types_(scene.output.vtp_types),
       ply_types_(scene.output.ply_types),
+      vdb_points_types_(scene.output.vdb_points_types),
       ply_z_up_(scene.output.ply_z_up),
       frozen_piece_(vtp_ && scene.output.frozen_once &&
                     in_mask(scene.output.vtp_types, ParticleType::Frozen) && frozen_count > 0),
       spacing_(scene.world.spacing),
       series_(out_dir / "particles.pvd"),
       world_(world),
-      surface_mesher_(std::move(surface_mesher)),
+      vdb_(std::move(vdb)),
       bodies_(out_dir, world, vtp_, resuming) {
-  if (surface_ && !surface_mesher_)
-    throw InputError(scene.source.string() + ":/output/formats",
-                     "\"surface\" needs a surface mesher: this program was built without "
-                     "upf_surface (OpenVDB)");
-  if (vtp_ || ply_ || surface_) ensure_directory(out_dir / "frames");
+  for (auto [needed, present, format] : {std::tuple{surface_, bool(vdb_.surface), "surface"},
+                                         std::tuple{vdb_points_, bool(vdb_.points), "vdb_points"}})
+    if (needed && !present)
+      throw InputError(scene.source.string() + ":/output/formats",
+                       "\"" + std::string(format) +
+                           "\" needs OpenVDB: this program was built without upf_surface");
+  if (vtp_ || ply_ || surface_ || vdb_points_) ensure_directory(out_dir / "frames");
 }
 
 namespace {
@@ -77,6 +84,7 @@ std::vector<std::string> FrameWriter::files_of_frame(const FramePieceNames& piec
   if (frozen_piece_ && !as_pieces && !frozen_written_) files.push_back(kFrozenFile);
   if (ply_) files.push_back(frame_file("frames/frame_%05d.ply", frames_));
   if (bodies_.writes_meshes()) files.push_back(frame_file("frames/bodies_%05d.vtp", frames_));
+  if (vdb_points_) files.push_back(frame_file("frames/points_%05d.vdb", frames_));
   if (surface_) {
     files.push_back(frame_file("frames/surface_%05d.ply", frames_));
     files.push_back(frame_file("frames/surface_%05d.vtp", frames_));
@@ -116,6 +124,12 @@ void FrameWriter::write(const Particles& particles, double time, const FramePiec
                  [&](const Particles& p) { write_ply_points(path, p, fields_); });
     }
   }
+  if (vdb_points_) {  // for Houdini (Convert VDB Points) and OpenVDB tools; not in the .pvd
+    const auto path = out_dir_ / frame_file("frames/points_%05d.vdb", frames_);
+    with_types(particles, vdb_points_types_, [&](const Particles& p) {
+      vdb_.points(path, p, fields_, spacing_, vdb_compression_);
+    });
+  }
   for (auto& f : bodies_.write_frame(frames_, time)) files.push_back(std::move(f));
   if (surface_) files.push_back(write_surface(particles));  // the last part at every step
   if (vtp_ || surface_) series_.add(time, files);
@@ -130,6 +144,13 @@ std::uint64_t FrameWriter::bytes_per_frame(const Particles& particles) const {
   if (ply_)
     with_types(particles, ply_types_,
                [&](const Particles& p) { bytes += ply_points_bytes(p, fields_); });
+  if (vdb_points_)  // about 40 bytes a point (P, v, id, type, material) and 4 per field value
+    with_types(particles, vdb_points_types_, [&](const Particles& p) {
+      std::uint64_t per_point = 40;
+      for (const auto& name : fields_)
+        per_point += p.find_scalar(name) ? 4 : p.find_vector(name) ? 12 : 0;
+      bytes += per_point * p.size();
+    });
   return bytes;
 }
 
@@ -140,7 +161,7 @@ std::uint64_t FrameWriter::bytes_once(const Particles& particles) const {
 }
 
 std::string FrameWriter::write_surface(const Particles& particles) const {
-  const MeshPiece mesh = surface_mesher_(particles, spacing_, world_.executor().threads());
+  const MeshPiece mesh = vdb_.surface(particles, spacing_, world_.executor().threads());
   const auto ply = out_dir_ / frame_file("frames/surface_%05d.ply", frames_);
   if (ply_z_up_) {
     MeshPiece turned = mesh;

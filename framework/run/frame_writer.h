@@ -25,15 +25,28 @@ namespace upf {
 // threads its logging library starts at load time (which make fork() unsafe under ASan).
 using SurfaceMesher = std::function<MeshPiece(const Particles&, double, int)>;
 
+// Writes the "vdb_points" frame: (file, particles, fields, spacing, compression) -> an OpenVDB
+// point data grid (framework/output/vdb_points_writer.h), from upf_surface for the same reason.
+using VdbPointsWriter =
+    std::function<void(const std::filesystem::path&, const Particles&,
+                       const std::vector<std::string>&, double, const std::string&)>;
+
+// The frame writers that need OpenVDB, as programs that load upf_surface give them
+// (framework/output/vdb_frame_writers.h); empty ones refuse the formats that need them.
+struct VdbFrameWriters {
+  SurfaceMesher surface;   // "surface"
+  VdbPointsWriter points;  // "vdb_points"
+};
+
 class FrameWriter {
  public:
   // `enabled` false writes no frame files (bodies.csv still). A scene asking for surfaces
-  // without a `surface_mesher` is an InputError at /output/formats. `resuming`: the logs wait
-  // for restore_state. `frozen_count`: the world's frozen particles over every rank
+  // or VDB points without the writer in `vdb` is an InputError at /output/formats. `resuming`: the
+  // logs wait for restore_state. `frozen_count`: the world's frozen particles over every rank
   // (World::count, a collective on a split world, so the caller's: only rank 0 writes frames).
   FrameWriter(const std::filesystem::path& out_dir, const SceneDescription& scene,
               std::vector<std::string> fields, bool enabled, const World& world,
-              std::size_t frozen_count, SurfaceMesher surface_mesher, bool resuming);
+              std::size_t frozen_count, VdbFrameWriters vdb, bool resuming);
 
   // After each step of length `dt` ending at `time` (body_outputs.h); `row`: a row of
   // body_forces.csv now.
@@ -46,7 +59,7 @@ class FrameWriter {
   // manifest to record first; `pieces`: as write() gets them (the pieces are the caller's).
   std::vector<std::string> files_of_frame(const FramePieceNames& pieces) const;
   // Whether write() reads `particles` beyond what went out as pieces (PLY, surfaces).
-  bool reads_particles_beside_pieces() const { return ply_ || surface_; }
+  bool reads_particles_beside_pieces() const { return ply_ || surface_ || vdb_points_; }
   // The bytes write() puts on disk per frame for `particles` uncompressed (particle files only:
   // not the surface meshes, whose size depends on the flow, nor the bodies' small files), and
   // those written once (the frozen piece): the size estimate of a run.
@@ -66,16 +79,19 @@ class FrameWriter {
   bool vtp_;      // .vtp frames and the .pvd
   bool ply_;      // .ply point clouds
   bool surface_;  // liquid surface meshes: .ply, and .vtp in the .pvd
+  bool vdb_points_;  // OpenVDB point data grids (frames/points_NNNNN.vdb)
+  std::string vdb_compression_;
   vtk_xml::Compression compression_;
   TypeMask vtp_types_;  // the types in the .vtp frame files (frozen ones apart, see below)
   TypeMask ply_types_;
+  TypeMask vdb_points_types_;
   bool ply_z_up_;                // PLY files turned Z-up for Blender (z_up.h)
   bool frozen_piece_;            // the frozen particles go once into frames/frozen.vtp
   bool frozen_written_ = false;  // by this process (a resumed run writes the same bytes again)
   double spacing_;
   PvdSeries series_;
   const World& world_;
-  SurfaceMesher surface_mesher_;
+  VdbFrameWriters vdb_;
   BodyOutputs bodies_;
   int frames_ = 0;
 };

@@ -122,7 +122,7 @@ class RunRecorder {
         manifest_(manifest),
         out_dir_(options.out_dir),
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
-                frozen_count, options.surface_mesher, options.resume),
+                frozen_count, options.vdb_writers, options.resume),
         metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume,
                  !world.sources().empty()),
         probes_(options.out_dir / "probes.csv", probe_names(scene), options.resume),

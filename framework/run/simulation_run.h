@@ -77,7 +77,7 @@ struct RunOptions {
   // Polled after every step: true ends the run after a checkpoint (status "interrupted").
   std::function<bool()> stop_requested;
   // Needed when the scene asks for the "surface" format; unset: such a scene is bad input.
-  SurfaceMesher surface_mesher;
+  VdbFrameWriters vdb_writers;
   // Where the steps run: unset, the CPU executor; else the device pipeline it makes for the
   // prepared world (device/device_pipelines.h), before anything is written. It may throw
   // InputError (a scene the pipeline does not cover, no GPU).

@@ -72,6 +72,11 @@ struct OutputDesc {
   // "surface": a triangle mesh of the liquid's surface per frame (frames/surface_NNNNN.ply, and
   // frames/surface_NNNNN.vtp as a further part of each time step in particles.pvd).
   bool surface = false;
+  // "vdb_points": an OpenVDB point data grid per frame (frames/points_NNNNN.vdb) for Houdini and
+  // OpenVDB tools, its attributes stored as "vdb_compression" says: "none", "truncate" (16-bit
+  // halfs) or "fixed_point" (16-bit positions in their voxel); docs/scene-format.md.
+  bool vdb_points = false;
+  std::string vdb_compression = "none";
   // "compression": "zlib" compresses the .vtp arrays (VTK's vtkZLibDataCompressor layout),
   // "none" writes them as they are in memory.
   bool compress = true;
@@ -88,6 +93,7 @@ struct OutputDesc {
   // unless the scene says.
   TypeMask vtp_types = kAllTypes;
   TypeMask ply_types = kAllTypes;
+  TypeMask vdb_points_types = kAllTypes;
   // "ply_up": "z" turns the PLY files (points and surfaces) Z-up for Blender (z_up.h); "y"
   // writes them in the scene's axes, as the .vtp files always are.
   bool ply_z_up = false;

@@ -408,6 +408,7 @@ void read_output_formats(JsonInput& in, const json& f, OutputDesc& output) {
       {"vtp", &OutputDesc::vtp},
       {"ply", &OutputDesc::ply},
       {"surface", &OutputDesc::surface},
+      {"vdb_points", &OutputDesc::vdb_points},
   };
   std::string known_list;
   for (const auto& [format, flag] : known)
@@ -445,13 +446,15 @@ std::size_t read_choice(JsonInput& in, const json& object, const std::string& pa
   return fallback;
 }
 
-// /output/types: {"vtp": ["liquid", ...], "ply": [...]}, the particle types each format writes.
+// /output/types: {"vtp": ["liquid", ...], "ply": [...], "vdb_points": [...]}, the particle types
+// each format writes.
 void read_output_types(JsonInput& in, const json& types, OutputDesc& output) {
   const std::string path = "/output/types";
   if (!in.expect_object(types, path)) return;
-  in.check_keys(types, path, {"vtp", "ply"});
+  in.check_keys(types, path, {"vtp", "ply", "vdb_points"});
   for (auto [format, mask] :
-       {std::pair{"vtp", &OutputDesc::vtp_types}, std::pair{"ply", &OutputDesc::ply_types}}) {
+       {std::pair{"vtp", &OutputDesc::vtp_types}, std::pair{"ply", &OutputDesc::ply_types},
+        std::pair{"vdb_points", &OutputDesc::vdb_points_types}}) {
     auto it = types.find(format);
     if (it == types.end()) continue;
     const std::string where = JsonInput::child(path, format);
@@ -485,8 +488,8 @@ void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
   if (it == doc.end() || !in.expect_object(*it, "/output")) return;
   const auto specs = output_setting_specs();
   std::vector<std::string> keys = spec_names(specs);
-  keys.insert(keys.end(),
-              {"fields", "formats", "compression", "frozen", "types", "ply_up", "pieces"});
+  keys.insert(keys.end(), {"fields", "formats", "compression", "frozen", "types", "ply_up",
+                           "pieces", "vdb_compression"});
   in.check_keys(*it, "/output", keys);
   OutputDesc& output = scene.output;
   output.fps = in.number(*it, "/output", spec_named(specs, "fps"), output.fps);
@@ -505,6 +508,9 @@ void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
   output.pieces_per_rank = read_choice(in, *it, "/output", "pieces", {"gathered", "per_rank"},
                                        output.pieces_per_rank ? 1 : 0) == 1;
   if (auto f = it->find("types"); f != it->end()) read_output_types(in, *f, output);
+  static constexpr const char* kVdbCompressions[] = {"none", "truncate", "fixed_point"};
+  output.vdb_compression = kVdbCompressions[read_choice(in, *it, "/output", "vdb_compression",
+                                                        {"none", "truncate", "fixed_point"}, 0)];
 }
 
 // Plug-in sections ("bodies"), once materials, spacing and containers are known; something must

@@ -7,7 +7,7 @@
 
 #include "device/device_pipelines.h"
 #include "framework/core/errors.h"
-#include "framework/output/liquid_surface.h"
+#include "framework/output/vdb_frame_writers.h"
 #include "framework/scene/scene_builder.h"
 #include "python_callback.h"
 #include "python_force.h"
@@ -161,7 +161,7 @@ RunResult Simulation::run(const std::filesystem::path& out, std::optional<double
   options.end_time = end;
   options.write_frames = frames;
   options.scene_text = scene_text_;
-  options.surface_mesher = run_surface_mesher;
+  options.vdb_writers = vdb_frame_writers();
   // A checkpoint names the command line that made it; a Python run (its forces and solvers
   // included) cannot be resumed by `upf run --resume`, so it writes none.
   options.final_checkpoint = false;

@@ -15,7 +15,7 @@
 #include "framework/compare/compare_report.h"
 #include "framework/compare/comparison.h"
 #include "framework/core/errors.h"
-#include "framework/output/liquid_surface.h"
+#include "framework/output/vdb_frame_writers.h"
 #include "framework/run/run_result_json.h"
 #include "framework/scene/scene_reader.h"
 #include "framework/scene/solver_override.h"
@@ -93,7 +93,7 @@ py::object compare(const std::filesystem::path& scene_file, const std::vector<st
       plan_comparison(scene, r, solvers.empty() ? solvers_for_scene(scene, r) : solvers);
   CompareOptions options;
   options.out_dir = out;
-  options.surface_mesher = run_surface_mesher;
+  options.vdb_writers = vdb_frame_writers();
   options.threads = threads;
   options.end_time = end;
   options.write_frames = frames;

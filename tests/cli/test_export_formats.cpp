@@ -124,6 +124,30 @@ TEST_F(ExportFormats, PlyAloneWritesPointCloudsAndNoSeries) {
   EXPECT_TRUE(fs::exists(out / "summary.json"));
 }
 
+// "vdb_points": an OpenVDB point data grid per frame (the read-back of every attribute by id is
+// tests/unit/test_vdb_points.cpp), recorded in the run's manifest, of the types asked for, not in
+// the .pvd.
+TEST_F(ExportFormats, VdbPointsWritesAGridPerFrameThatTheManifestRecords) {
+  auto doc = tank();
+  doc["time"]["end"] = 0.004;
+  doc["output"]["formats"] = {"vtp", "vdb_points"};
+  doc["output"]["vdb_compression"] = "fixed_point";
+  doc["output"]["types"] = {{"vdb_points", {"liquid"}}};
+  const fs::path out = dir_ / "out";
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string manifest = read_text(out / "upf_manifest.txt");
+  for (const char* f : {"points_00000.vdb", "points_00001.vdb", "points_00002.vdb"}) {
+    const std::string bytes = read_text(out / "frames" / f);
+    ASSERT_GT(bytes.size(), 8u) << f;
+    EXPECT_EQ(bytes.substr(0, 4), std::string(" BDV")) << f << ": OpenVDB's magic number";
+    EXPECT_NE(manifest.find(std::string("f frames/") + f), std::string::npos) << f;
+  }
+  EXPECT_EQ(read_text(out / "particles.pvd").find(".vdb"), std::string::npos);
+  doc["output"]["vdb_compression"] = "zip";
+  expect_rejected(doc, {":/output/vdb_compression", "\"none\", \"truncate\", \"fixed_point\""});
+}
+
 // Blender 3.4's own PLY importer shows a point cloud without colours (it keeps colours only on
 // faces); scripts/blender_upf.py opens the run with the colours and every property as point
 // attributes, and follows the timeline (tests/cli/check_blender_import.py, in Blender headless).
