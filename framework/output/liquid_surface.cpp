@@ -2,6 +2,7 @@
 // of the project that includes OpenVDB headers: upf_framework links OpenVDB privately.
 #include "framework/output/liquid_surface.h"
 
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetFilter.h>
 #include <openvdb/tools/ParticlesToLevelSet.h>
@@ -17,6 +18,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "framework/output/atomic_file.h"
 
 namespace upf {
 
@@ -75,18 +78,18 @@ double signed_volume(const MeshPiece& mesh) {
   return six_v / 6;
 }
 
-MeshPiece build_mesh(const std::vector<Eigen::Vector3d>& positions, double h,
-                     const LiquidSurfaceOptions& options) {
-  MeshPiece mesh;
-  mesh.name = "liquid surface";
-  if (positions.empty()) return mesh;
-
+// Steps 1 to 3 (liquid_surface.h): the narrow-band level set whose zero level is the surface; an
+// empty one (all background) for no particles.
+openvdb::FloatGrid::Ptr level_set_of(const std::vector<Eigen::Vector3d>& positions, double h,
+                                     const LiquidSurfaceOptions& options) {
   openvdb::initialize();  // idempotent and thread-safe: registers OpenVDB's grid types
   const double dx = options.voxel_factor * h;
   const double radius = options.radius_factor * h;
   // Half-width of the narrow band in voxels; OpenVDB's default (3) suffices, as the filters
   // keep the band around the moving surface.
   auto grid = openvdb::createLevelSet<openvdb::FloatGrid>(dx, openvdb::LEVEL_SET_HALF_WIDTH);
+  grid->setName("surface");
+  if (positions.empty()) return grid;
 
   // 1. Union of spheres. Each thread rasterises into its own grid and the grids are merged by
   // a CSG union (a minimum), so the result does not depend on how the work was split.
@@ -108,12 +111,19 @@ MeshPiece build_mesh(const std::vector<Eigen::Vector3d>& positions, double h,
     filter.offset(static_cast<float>(erosion));  // positive: the surface moves inwards
     for (int i = 0; i < options.smoothing_iterations; ++i) filter.meanCurvature();
   }
+  return grid;
+}
 
+// Step 4: the zero level set as triangles.
+MeshPiece mesh_of(const openvdb::FloatGrid& grid) {
+  MeshPiece mesh;
+  mesh.name = "liquid surface";
+  if (grid.empty()) return mesh;
   // 4. Zero level set as polygons.
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*grid, points, triangles, quads, /*isovalue=*/0.0,
+  openvdb::tools::volumeToMesh(grid, points, triangles, quads, /*isovalue=*/0.0,
                                /*adaptivity=*/0.0);
   if (points.size() > std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("liquid_surface_mesh: too many vertices for 32-bit indices");
@@ -142,34 +152,57 @@ MeshPiece build_mesh(const std::vector<Eigen::Vector3d>& positions, double h,
   return mesh;
 }
 
-}  // namespace
-
-MeshPiece liquid_surface_mesh(const std::vector<Eigen::Vector3d>& positions, double h,
-                              const LiquidSurfaceOptions& options) {
-  check_input(positions, h, options);
-  if (options.threads > 0) {
-    MeshPiece mesh;
-    tbb::task_arena(options.threads).execute([&] { mesh = build_mesh(positions, h, options); });
-    return mesh;
-  }
-  return build_mesh(positions, h, options);
+MeshPiece surface_outputs(const std::vector<Eigen::Vector3d>& positions, double h,
+                          const LiquidSurfaceOptions& options,
+                          const LiquidSurfaceOutputs& outputs) {
+  const openvdb::FloatGrid::Ptr grid = level_set_of(positions, h, options);
+  if (!outputs.level_set_file.empty())
+    write_file_atomically(outputs.level_set_file, [&](std::ostream& out) {
+      openvdb::io::Stream(out).write(openvdb::GridCPtrVec{grid});
+    });
+  return outputs.mesh ? mesh_of(*grid) : MeshPiece{};
 }
 
-MeshPiece liquid_surface_mesh(const Particles& particles, double h,
-                              const LiquidSurfaceOptions& options) {
+std::vector<Eigen::Vector3d> liquid_positions(const Particles& particles) {
   std::vector<Eigen::Vector3d> liquid;
   for (std::size_t i = 0; i < particles.size(); ++i)
     if (particles.type[i] == ParticleType::Liquid) {
       const Vec3& p = particles.position[i];
       liquid.emplace_back(double(p.x), double(p.y), double(p.z));
     }
-  return liquid_surface_mesh(liquid, h, options);
+  return liquid;
 }
 
-MeshPiece run_surface_mesher(const Particles& particles, double h, int threads) {
+}  // namespace
+
+MeshPiece liquid_surface(const std::vector<Eigen::Vector3d>& positions, double h,
+                         const LiquidSurfaceOptions& options, const LiquidSurfaceOutputs& outputs) {
+  check_input(positions, h, options);
+  if (options.threads > 0) {
+    MeshPiece mesh;
+    tbb::task_arena(options.threads).execute([&] {
+      mesh = surface_outputs(positions, h, options, outputs);
+    });
+    return mesh;
+  }
+  return surface_outputs(positions, h, options, outputs);
+}
+
+MeshPiece liquid_surface_mesh(const std::vector<Eigen::Vector3d>& positions, double h,
+                              const LiquidSurfaceOptions& options) {
+  return liquid_surface(positions, h, options, {});
+}
+
+MeshPiece liquid_surface_mesh(const Particles& particles, double h,
+                              const LiquidSurfaceOptions& options) {
+  return liquid_surface_mesh(liquid_positions(particles), h, options);
+}
+
+MeshPiece run_surface_mesher(const Particles& particles, double h, int threads,
+                             const std::filesystem::path& level_set_file, bool mesh) {
   LiquidSurfaceOptions options;
   options.threads = threads;
-  return liquid_surface_mesh(particles, h, options);
+  return liquid_surface(liquid_positions(particles), h, options, {mesh, level_set_file});
 }
 
 }  // namespace upf

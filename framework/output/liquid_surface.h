@@ -22,6 +22,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <filesystem>
 #include <vector>
 
 #include "framework/output/mesh_vtp_writer.h"
@@ -59,8 +60,26 @@ MeshPiece liquid_surface_mesh(const std::vector<Eigen::Vector3d>& positions, dou
 MeshPiece liquid_surface_mesh(const Particles& particles, double h,
                               const LiquidSurfaceOptions& options = {});
 
-// The mesher runs use for the "surface" format (RunOptions::surface_mesher), with the default
-// options and the run's thread count.
-MeshPiece run_surface_mesher(const Particles& particles, double h, int threads);
+// What one surfacing gives: the mesh, and the level set of steps 1-3 written to
+// `level_set_file` when it is not empty. That file holds one OpenVDB FloatGrid named "surface",
+// of class level set: the signed distance to the surface in metres, negative inside, in a
+// narrow band of 3 voxels on each side (the background value, 3 voxels, elsewhere), at world
+// voxel size voxel_factor * h (h/2 by default), its zero level the mesh's surface.
+struct LiquidSurfaceOutputs {
+  bool mesh = true;
+  std::filesystem::path level_set_file;
+};
+
+// The surface of `positions` (as liquid_surface_mesh) and the outputs asked for; the mesh is
+// empty when `outputs.mesh` is false. Throws what liquid_surface_mesh throws, and OutputError
+// when the level set file cannot be written.
+MeshPiece liquid_surface(const std::vector<Eigen::Vector3d>& positions, double h,
+                         const LiquidSurfaceOptions& options, const LiquidSurfaceOutputs& outputs);
+
+// The surfacing runs use for the "surface" and "surface_vdb" formats (VdbFrameWriters), with the
+// default options and the run's thread count: the mesh when `mesh`, the level set into
+// `level_set_file` when it is not empty.
+MeshPiece run_surface_mesher(const Particles& particles, double h, int threads,
+                             const std::filesystem::path& level_set_file, bool mesh);
 
 }  // namespace upf

@@ -32,6 +32,7 @@ FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescri
       vtp_(enabled && scene.output.vtp),
       ply_(enabled && scene.output.ply),
       surface_(enabled && scene.output.surface),
+      surface_vdb_(enabled && scene.output.surface_vdb),
       vdb_points_(enabled && scene.output.vdb_points),
       vdb_compression_(scene.output.vdb_compression),
       compression_(scene.output.compress ? vtk_xml::Compression::zlib : vtk_xml::Compression::none),
@@ -46,13 +47,15 @@ FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescri
       world_(world),
       vdb_(std::move(vdb)),
       bodies_(out_dir, world, vtp_, resuming) {
-  for (auto [needed, present, format] : {std::tuple{surface_, bool(vdb_.surface), "surface"},
-                                         std::tuple{vdb_points_, bool(vdb_.points), "vdb_points"}})
+  for (auto [needed, present, format] :
+       {std::tuple{surface_, bool(vdb_.surface), "surface"},
+        std::tuple{surface_vdb_, bool(vdb_.surface), "surface_vdb"},
+        std::tuple{vdb_points_, bool(vdb_.points), "vdb_points"}})
     if (needed && !present)
       throw InputError(scene.source.string() + ":/output/formats",
                        "\"" + std::string(format) +
                            "\" needs OpenVDB: this program was built without upf_surface");
-  if (vtp_ || ply_ || surface_ || vdb_points_) ensure_directory(out_dir / "frames");
+  if (vtp_ || ply_ || surface_ || surface_vdb_ || vdb_points_) ensure_directory(out_dir / "frames");
 }
 
 namespace {
@@ -85,6 +88,7 @@ std::vector<std::string> FrameWriter::files_of_frame(const FramePieceNames& piec
   if (ply_) files.push_back(frame_file("frames/frame_%05d.ply", frames_));
   if (bodies_.writes_meshes()) files.push_back(frame_file("frames/bodies_%05d.vtp", frames_));
   if (vdb_points_) files.push_back(frame_file("frames/points_%05d.vdb", frames_));
+  if (surface_vdb_) files.push_back(frame_file("frames/surface_%05d.vdb", frames_));
   if (surface_) {
     files.push_back(frame_file("frames/surface_%05d.ply", frames_));
     files.push_back(frame_file("frames/surface_%05d.vtp", frames_));
@@ -131,7 +135,10 @@ void FrameWriter::write(const Particles& particles, double time, const FramePiec
     });
   }
   for (auto& f : bodies_.write_frame(frames_, time)) files.push_back(std::move(f));
-  if (surface_) files.push_back(write_surface(particles));  // the last part at every step
+  if (surface_ || surface_vdb_) {
+    std::string vtp = write_surface(particles);
+    if (!vtp.empty()) files.push_back(std::move(vtp));  // the last part at every step
+  }
   if (vtp_ || surface_) series_.add(time, files);
   ++frames_;
 }
@@ -161,7 +168,12 @@ std::uint64_t FrameWriter::bytes_once(const Particles& particles) const {
 }
 
 std::string FrameWriter::write_surface(const Particles& particles) const {
-  const MeshPiece mesh = vdb_.surface(particles, spacing_, world_.executor().threads());
+  const std::filesystem::path level_set =
+      surface_vdb_ ? out_dir_ / frame_file("frames/surface_%05d.vdb", frames_)
+                   : std::filesystem::path();
+  const MeshPiece mesh =
+      vdb_.surface(particles, spacing_, world_.executor().threads(), level_set, surface_);
+  if (!surface_) return {};
   const auto ply = out_dir_ / frame_file("frames/surface_%05d.ply", frames_);
   if (ply_z_up_) {
     MeshPiece turned = mesh;

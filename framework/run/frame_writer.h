@@ -19,11 +19,14 @@
 
 namespace upf {
 
-// Meshes the liquid's surface for the "surface" output format: (particles, spacing, threads) ->
-// a closed mesh. upf_surface (framework/output/liquid_surface.h, OpenVDB) provides one; it is a
-// library of its own so that programs which never mesh surfaces do not load OpenVDB and the
-// threads its logging library starts at load time (which make fork() unsafe under ASan).
-using SurfaceMesher = std::function<MeshPiece(const Particles&, double, int)>;
+// Surfaces the liquid for the "surface" and "surface_vdb" output formats: (particles, spacing,
+// threads, level set file, mesh?) -> the closed mesh when asked for, and the surface's level set
+// written to the file when one is named. upf_surface (framework/output/liquid_surface.h,
+// OpenVDB) provides one; it is a library of its own so that programs which never mesh surfaces do
+// not load OpenVDB and the threads its logging library starts at load time (which make fork()
+// unsafe under ASan).
+using SurfaceMesher =
+    std::function<MeshPiece(const Particles&, double, int, const std::filesystem::path&, bool)>;
 
 // Writes the "vdb_points" frame: (file, particles, fields, spacing, compression) -> an OpenVDB
 // point data grid (framework/output/vdb_points_writer.h), from upf_surface for the same reason.
@@ -34,7 +37,7 @@ using VdbPointsWriter =
 // The frame writers that need OpenVDB, as programs that load upf_surface give them
 // (framework/output/vdb_frame_writers.h); empty ones refuse the formats that need them.
 struct VdbFrameWriters {
-  SurfaceMesher surface;   // "surface"
+  SurfaceMesher surface;   // "surface" and "surface_vdb"
   VdbPointsWriter points;  // "vdb_points"
 };
 
@@ -59,7 +62,9 @@ class FrameWriter {
   // manifest to record first; `pieces`: as write() gets them (the pieces are the caller's).
   std::vector<std::string> files_of_frame(const FramePieceNames& pieces) const;
   // Whether write() reads `particles` beyond what went out as pieces (PLY, surfaces).
-  bool reads_particles_beside_pieces() const { return ply_ || surface_ || vdb_points_; }
+  bool reads_particles_beside_pieces() const {
+    return ply_ || surface_ || surface_vdb_ || vdb_points_;
+  }
   // The bytes write() puts on disk per frame for `particles` uncompressed (particle files only:
   // not the surface meshes, whose size depends on the flow, nor the bodies' small files), and
   // those written once (the frozen piece): the size estimate of a run.
@@ -71,7 +76,8 @@ class FrameWriter {
   void restore_state(StateReader& in);
 
  private:
-  // frames/surface_NNNNN.ply for renderers and .vtp for ParaView; returns the .vtp's name.
+  // frames/surface_NNNNN.ply for renderers and .vtp for ParaView ("surface"; returns the .vtp's
+  // name) and frames/surface_NNNNN.vdb ("surface_vdb"), from one surfacing; "" without a mesh.
   std::string write_surface(const Particles& particles) const;
 
   std::filesystem::path out_dir_;
@@ -79,7 +85,8 @@ class FrameWriter {
   bool vtp_;      // .vtp frames and the .pvd
   bool ply_;      // .ply point clouds
   bool surface_;  // liquid surface meshes: .ply, and .vtp in the .pvd
-  bool vdb_points_;  // OpenVDB point data grids (frames/points_NNNNN.vdb)
+  bool surface_vdb_;  // the liquid surface's level set (frames/surface_NNNNN.vdb)
+  bool vdb_points_;   // OpenVDB point data grids (frames/points_NNNNN.vdb)
   std::string vdb_compression_;
   vtk_xml::Compression compression_;
   TypeMask vtp_types_;  // the types in the .vtp frame files (frozen ones apart, see below)

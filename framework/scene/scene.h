@@ -76,6 +76,10 @@ struct OutputDesc {
   // OpenVDB tools, its attributes stored as "vdb_compression" says: "none", "truncate" (16-bit
   // halfs) or "fixed_point" (16-bit positions in their voxel); docs/scene-format.md.
   bool vdb_points = false;
+  // "surface_vdb": the liquid surface's narrow-band level set per frame
+  // (frames/surface_NNNNN.vdb, an OpenVDB float grid named "surface"), from the same surfacing
+  // as "surface" (liquid_surface.h): Blender's Volume to Mesh, Houdini's VDB tools.
+  bool surface_vdb = false;
   std::string vdb_compression = "none";
   // "compression": "zlib" compresses the .vtp arrays (VTK's vtkZLibDataCompressor layout),
   // "none" writes them as they are in memory.

@@ -409,6 +409,7 @@ void read_output_formats(JsonInput& in, const json& f, OutputDesc& output) {
       {"ply", &OutputDesc::ply},
       {"surface", &OutputDesc::surface},
       {"vdb_points", &OutputDesc::vdb_points},
+      {"surface_vdb", &OutputDesc::surface_vdb},
   };
   std::string known_list;
   for (const auto& [format, flag] : known)

@@ -124,20 +124,21 @@ TEST_F(ExportFormats, PlyAloneWritesPointCloudsAndNoSeries) {
   EXPECT_TRUE(fs::exists(out / "summary.json"));
 }
 
-// "vdb_points": an OpenVDB point data grid per frame (the read-back of every attribute by id is
-// tests/unit/test_vdb_points.cpp), recorded in the run's manifest, of the types asked for, not in
-// the .pvd.
-TEST_F(ExportFormats, VdbPointsWritesAGridPerFrameThatTheManifestRecords) {
+// "vdb_points" and "surface_vdb": OpenVDB grids per frame (the read-back of every attribute by id,
+// and of the level set against the mesh, is tests/unit/test_vdb_points.cpp), recorded in the
+// run's manifest, not in the .pvd.
+TEST_F(ExportFormats, VdbPointsAndLevelSetsWriteAGridPerFrameThatTheManifestRecords) {
   auto doc = tank();
   doc["time"]["end"] = 0.004;
-  doc["output"]["formats"] = {"vtp", "vdb_points"};
+  doc["output"]["formats"] = {"vtp", "vdb_points", "surface_vdb"};
   doc["output"]["vdb_compression"] = "fixed_point";
   doc["output"]["types"] = {{"vdb_points", {"liquid"}}};
   const fs::path out = dir_ / "out";
   const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " --threads 1 -q");
   ASSERT_EQ(r.code, 0) << r.output;
   const std::string manifest = read_text(out / "upf_manifest.txt");
-  for (const char* f : {"points_00000.vdb", "points_00001.vdb", "points_00002.vdb"}) {
+  for (const char* f : {"points_00000.vdb", "points_00001.vdb", "points_00002.vdb",
+                        "surface_00000.vdb", "surface_00002.vdb"}) {
     const std::string bytes = read_text(out / "frames" / f);
     ASSERT_GT(bytes.size(), 8u) << f;
     EXPECT_EQ(bytes.substr(0, 4), std::string(" BDV")) << f << ": OpenVDB's magic number";

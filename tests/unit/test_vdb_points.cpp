@@ -1,12 +1,16 @@
-// VDB points frames (framework/output/vdb_points_writer.h, issue 43): every attribute read back
-// through OpenVDB's own reader (io::File, points::AttributeHandle) matches the particle it came
-// from, found by its id: exactly without compression, and within each codec's stated bound
-// otherwise (the bounds are the codecs' quantisation: a half's 11-bit significand, a 16-bit fixed
-// point over one voxel).
+// The OpenVDB frames (issue 43), read back through OpenVDB's own reader (io::File):
+// - VDB points (framework/output/vdb_points_writer.h): every attribute matches the particle it
+//   came from, found by its id: exactly without compression, and within each codec's stated
+//   bound otherwise (the codecs' quantisation: a half's 11-bit significand, a 16-bit fixed point
+//   over one voxel);
+// - the surface's level set (liquid_surface.h, "surface_vdb"): its zero level lies within half a
+//   voxel of every vertex of the mesh made by the same surfacing.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <random>
@@ -15,7 +19,9 @@
 
 #include <openvdb/openvdb.h>
 #include <openvdb/points/PointDataGrid.h>
+#include <openvdb/tools/Interpolation.h>
 
+#include "framework/output/liquid_surface.h"
 #include "framework/output/vdb_points_writer.h"
 #include "framework/particles/particles.h"
 
@@ -153,6 +159,44 @@ TEST(VdbPoints, TheVoxelIsAPowerOfTwoNearTwoSpacings) {
   EXPECT_EQ(vdb_points_voxel_size(0.02), 0.03125);
   EXPECT_EQ(vdb_points_voxel_size(0.01), 0.015625);
   EXPECT_EQ(vdb_points_voxel_size(0.5), 1.0);
+}
+
+// A ball of 3,000-odd particles at spacing 0.02 and a slab beside it: the level set written with
+// the mesh of the same call, read back, sampled (trilinearly) at every mesh vertex.
+TEST(SurfaceLevelSet, ItsZeroLevelIsTheMeshWithinHalfAVoxel) {
+  const double h = 0.02;
+  std::vector<Eigen::Vector3d> positions;
+  for (int i = -10; i <= 10; ++i)
+    for (int j = -10; j <= 10; ++j)
+      for (int k = -10; k <= 10; ++k) {
+        const Eigen::Vector3d x(i * h, j * h, k * h);
+        if (x.norm() <= 0.18) positions.push_back(x);
+        if (i < -6) positions.push_back(x + Eigen::Vector3d(0.5, 0, 0));  // a slab
+      }
+  const fs::path file = fs::temp_directory_path() / "upf_surface_level_set.vdb";
+  const MeshPiece mesh = liquid_surface(positions, h, {}, {true, file});
+  ASSERT_GT(mesh.vertices.size(), 1000u);
+
+  openvdb::initialize();
+  openvdb::io::File in(file.string());
+  in.open();
+  const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(in.readGrid("surface"));
+  in.close();
+  fs::remove(file);
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->getGridClass(), openvdb::GRID_LEVEL_SET);
+  const double voxel = grid->voxelSize()[0];
+  EXPECT_DOUBLE_EQ(voxel, 0.5 * h);
+  const openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> at(*grid);
+  double largest = 0;
+  for (const Eigen::Vector3d& v : mesh.vertices)
+    largest = std::max(largest, std::abs(double(at.wsSample(openvdb::Vec3d(v.x(), v.y(), v.z())))));
+  std::printf("level set at the mesh's %zu vertices: |phi| <= %.3g voxel\n", mesh.vertices.size(),
+              largest / voxel);
+  EXPECT_LE(largest, 0.5 * voxel);
+  // Negative inside, positive outside: the ball's centre and a point well outside.
+  EXPECT_LT(at.wsSample(openvdb::Vec3d(0, 0, 0)), 0.f);
+  EXPECT_GT(at.wsSample(openvdb::Vec3d(0, 0.3, 0)), 0.f);
 }
 
 }  // namespace
