@@ -1,8 +1,7 @@
 #include "framework/run/frame_writer.h"
 
-#include <tuple>
-
 #include <cstdio>
+#include <tuple>
 
 #include "framework/core/errors.h"
 #include "framework/core/state_stream.h"
