@@ -1,42 +1,54 @@
 // A triangle mesh of the liquid's surface, built from the liquid particles' positions: what a
 // renderer needs where the particles themselves are only points.
 //
-// Method: the union of spheres around the particles as a narrow-band level set (Zhu & Bridson
-// 2005, "Animating sand as a fluid", SIGGRAPH, Sec. 6: surface reconstruction from particles),
-// stored in a sparse VDB grid (Museth 2013, "VDB: High-resolution sparse volumes with dynamic
-// topology", ACM TOG 32(3)), using OpenVDB's tools:
-//   1. tools::ParticlesToLevelSet rasterises a sphere of radius R = radius_factor * h around
-//      every particle (h: the particle spacing) into a level set of voxel size voxel_factor * h;
-//   2. tools::LevelSetFilter::offset erodes it by R - h/2 (less h^2 / 12R, the mean dip of the
-//      union of spheres between lattice neighbours; see the .cpp), so a flat surface ends h/2
-//      beyond the outermost particle centres, as each particle stands for a cube of side h (a
-//      lattice block of N particles is then N h^3, the liquid volume mass / rho0). Large spheres
-//      first, then erosion, fill the gaps between neighbouring spheres that small spheres would
-//      leave as bumps;
-//   3. optionally a few mean-curvature smoothing passes (LevelSetFilter::meanCurvature);
-//   4. tools::volumeToMesh with adaptivity 0 extracts the zero level as triangles and quads; each
-//      quad becomes two triangles.
+// The surface is the zero level of a narrow-band level set in a sparse VDB grid (Museth 2013,
+// "VDB: High-resolution sparse volumes with dynamic topology", ACM TOG 32(3)), built with
+// OpenVDB's tools in one of two ways:
+//   anisotropic (default): the level 1/2 of a sum of anisotropic kernels, one per particle,
+//      flattened along the surface where the particle's neighbours lie in a layer (Yu & Turk
+//      2013, "Reconstructing surfaces of particle-based fluids using anisotropic kernels", ACM
+//      TOG 32(1); anisotropic_kernels.h). The sum is sampled at the voxel centres and rebuilt as
+//      a signed distance band (tools::levelSetRebuild). A flat surface shows no bump per
+//      particle, thin sheets stay sheets, isolated particles stay drops.
+//   spheres: the union of spheres around the particles (Zhu & Bridson 2005, "Animating sand as a
+//      fluid", SIGGRAPH, Sec. 6): tools::ParticlesToLevelSet rasterises a sphere of radius
+//      R = radius_factor * h around every particle, and tools::LevelSetFilter::offset erodes it
+//      by R - h/2 (less h^2 / 12R, the mean dip of the union of spheres between lattice
+//      neighbours; see the .cpp), so a flat surface ends h/2 beyond the outermost particle
+//      centres. Each particle shows as a bump of up to 0.13 h on a flat surface.
+// Both put a resting lattice block's face h/2 beyond its outer centres, as each particle stands
+// for a cube of side h (N particles enclose N h^3, the liquid volume mass / rho0). Then
+// optionally a few mean-curvature smoothing passes (LevelSetFilter::meanCurvature), and
+// tools::volumeToMesh with adaptivity 0 extracts the zero level as triangles and quads; each
+// quad becomes two triangles.
 // The triangles are wound counter-clockwise seen from outside (the enclosed volume by the
 // divergence theorem is positive), and the mesh is closed. The result depends only on the input
-// (no globals; OpenVDB's threading does not change it).
+// (no globals; the number of threads does not change it).
 #pragma once
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <string>
 #include <vector>
 
+#include "framework/output/anisotropic_kernels.h"
 #include "framework/output/mesh_vtp_writer.h"
 #include "framework/particles/particles.h"
 
 namespace upf {
 
+enum class SurfaceMethod { anisotropic, spheres };
+
 // Lengths are in units of the particle spacing h. The defaults were chosen by measuring the
-// enclosed volume against N h^3 (tests/unit/test_liquid_surface.cpp): within about 2 % for a
-// resting box and balls of particles; a finer voxel gave no better volumes at 4 to 5 times the
-// time.
+// enclosed volume against N h^3 and the flatness of a resting surface
+// (tests/unit/test_liquid_surface.cpp, docs/rendering.md).
 struct LiquidSurfaceOptions {
-  // Sphere radius R / h. Larger closes wider gaps between particles (spray merges into sheets)
-  // but rounds edges and corners more; the erosion R - h/2 brings the flat surface back.
+  SurfaceMethod method = SurfaceMethod::anisotropic;
+  // The anisotropic method's kernels (anisotropic_kernels.h).
+  AnisotropyParameters anisotropy;
+  // The spheres method: sphere radius R / h. Larger closes wider gaps between particles (spray
+  // merges into sheets) but rounds edges and corners more; the erosion R - h/2 brings the flat
+  // surface back.
   double radius_factor = 2.0;
   // Voxel size / h. Smaller gives a finer mesh (about 1 / voxel_factor^2 times as many
   // triangles) and costs about 1 / voxel_factor^3 times the time and memory. R must span at
@@ -77,9 +89,11 @@ MeshPiece liquid_surface(const std::vector<Eigen::Vector3d>& positions, double h
                          const LiquidSurfaceOptions& options, const LiquidSurfaceOutputs& outputs);
 
 // The surfacing runs use for the "surface" and "surface_vdb" formats (VdbFrameWriters), with the
-// default options and the run's thread count: the mesh when `mesh`, the level set into
-// `level_set_file` when it is not empty.
+// default options of `method` ("anisotropic" or "spheres", the scene's /output/surface_method)
+// and the run's thread count: the mesh when `mesh`, the level set into `level_set_file` when it
+// is not empty.
 MeshPiece run_surface_mesher(const Particles& particles, double h, int threads,
-                             const std::filesystem::path& level_set_file, bool mesh);
+                             const std::filesystem::path& level_set_file, bool mesh,
+                             const std::string& method);
 
 }  // namespace upf

@@ -81,6 +81,9 @@ struct OutputDesc {
   // as "surface" (liquid_surface.h): Blender's Volume to Mesh, Houdini's VDB tools.
   bool surface_vdb = false;
   std::string vdb_compression = "none";
+  // How "surface" and "surface_vdb" find the surface: "anisotropic" (Yu & Turk 2013 kernels,
+  // smooth) or "spheres" (the eroded union of spheres); framework/output/liquid_surface.h.
+  std::string surface_method = "anisotropic";
   // "compression": "zlib" compresses the .vtp arrays (VTK's vtkZLibDataCompressor layout),
   // "none" writes them as they are in memory.
   bool compress = true;

@@ -490,7 +490,7 @@ void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
   const auto specs = output_setting_specs();
   std::vector<std::string> keys = spec_names(specs);
   keys.insert(keys.end(), {"fields", "formats", "compression", "frozen", "types", "ply_up",
-                           "pieces", "vdb_compression"});
+                           "pieces", "vdb_compression", "surface_method"});
   in.check_keys(*it, "/output", keys);
   OutputDesc& output = scene.output;
   output.fps = in.number(*it, "/output", spec_named(specs, "fps"), output.fps);
@@ -512,6 +512,9 @@ void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
   static constexpr const char* kVdbCompressions[] = {"none", "truncate", "fixed_point"};
   output.vdb_compression = kVdbCompressions[read_choice(in, *it, "/output", "vdb_compression",
                                                         {"none", "truncate", "fixed_point"}, 0)];
+  static constexpr const char* kSurfaceMethods[] = {"anisotropic", "spheres"};
+  output.surface_method = kSurfaceMethods[read_choice(in, *it, "/output", "surface_method",
+                                                      {"anisotropic", "spheres"}, 0)];
 }
 
 // Plug-in sections ("bodies"), once materials, spacing and containers are known; something must

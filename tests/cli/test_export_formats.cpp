@@ -149,6 +149,28 @@ TEST_F(ExportFormats, VdbPointsAndLevelSetsWriteAGridPerFrameThatTheManifestReco
   expect_rejected(doc, {":/output/vdb_compression", "\"none\", \"truncate\", \"fixed_point\""});
 }
 
+// "/output/surface_method" picks the surfacing of "surface" (framework/output/liquid_surface.h):
+// the anisotropic kernels by default, the union of spheres on request; anything else is refused.
+TEST_F(ExportFormats, SurfaceMethodPicksTheSurfacing) {
+  auto doc = tank();
+  doc["time"]["end"] = 0.001;
+  doc["output"]["formats"] = {"surface"};
+  const fs::path smooth = dir_ / "smooth";
+  Result r = run_upf("run " + write(doc) + " --out " + smooth.string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  doc["output"]["surface_method"] = "spheres";
+  const fs::path spheres = dir_ / "spheres";
+  r = run_upf("run " + write(doc) + " --out " + spheres.string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string a = read_text(smooth / "frames" / "surface_00000.ply");
+  const std::string b = read_text(spheres / "frames" / "surface_00000.ply");
+  ASSERT_GT(a.size(), 200u);
+  ASSERT_GT(b.size(), 200u);
+  EXPECT_NE(a, b);
+  doc["output"]["surface_method"] = "bumps";
+  expect_rejected(doc, {":/output/surface_method", "\"anisotropic\", \"spheres\""});
+}
+
 // Blender 3.4's own PLY importer shows a point cloud without colours (it keeps colours only on
 // faces); scripts/blender_upf.py opens the run with the colours and every property as point
 // attributes, and follows the timeline (tests/cli/check_blender_import.py, in Blender headless).
@@ -168,6 +190,24 @@ TEST_F(ExportFormats, BlenderOpensThePointCloudsWithColoursAndAttributes) {
                              check.string() + " -- " + out.string());
   EXPECT_EQ(b.code, 0) << b.output;
   EXPECT_NE(b.output.find("blender import ok"), std::string::npos) << b.output;
+}
+
+// Blender 3.4 reads a "surface_vdb" level set (File > Import > OpenVDB) and its Volume to Mesh
+// modifier at threshold 0 meshes it where upf's own mesh lies
+// (tests/cli/check_blender_level_set.py).
+TEST_F(ExportFormats, BlenderMeshesTheLevelSetWhereTheSurfaceMeshLies) {
+  if (run_shell("command -v blender").code != 0) GTEST_SKIP() << "Blender is not installed";
+  auto doc = tank();
+  doc["time"]["end"] = 0.002;
+  doc["output"]["formats"] = {"surface", "surface_vdb"};
+  const fs::path out = dir_ / "out";
+  const Result r = run_upf("run " + write(doc) + " --out " + out.string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const fs::path check = fs::path(UPF_SOURCE_DIR) / "tests" / "cli" / "check_blender_level_set.py";
+  const Result b = run_shell("blender -b --factory-startup --python-exit-code 1 --python " +
+                             check.string() + " -- " + out.string());
+  EXPECT_EQ(b.code, 0) << b.output;
+  EXPECT_NE(b.output.find("blender level set ok"), std::string::npos) << b.output;
 }
 
 // "ply_up": "z" turns the point clouds Z-up for Blender: (x, y, z) -> (x, -z, y), velocities
