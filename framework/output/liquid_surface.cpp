@@ -279,9 +279,10 @@ MeshPiece liquid_surface_mesh(const Particles& particles, double h,
 
 MeshPiece run_surface_mesher(const Particles& particles, double h, int threads,
                              const std::filesystem::path& level_set_file, bool mesh,
-                             const std::string& method) {
+                             const std::string& method, double voxel_factor) {
   LiquidSurfaceOptions options;
   options.threads = threads;
+  options.voxel_factor = voxel_factor;
   if (method == "spheres") options.method = SurfaceMethod::spheres;
   return liquid_surface(liquid_positions(particles), h, options, {mesh, level_set_file});
 }

@@ -90,10 +90,10 @@ MeshPiece liquid_surface(const std::vector<Eigen::Vector3d>& positions, double h
 
 // The surfacing runs use for the "surface" and "surface_vdb" formats (VdbFrameWriters), with the
 // default options of `method` ("anisotropic" or "spheres", the scene's /output/surface_method)
-// and the run's thread count: the mesh when `mesh`, the level set into `level_set_file` when it
-// is not empty.
+// at `voxel_factor` (/output/surface_voxel) and the run's thread count: the mesh when `mesh`, the
+// level set into `level_set_file` when it is not empty.
 MeshPiece run_surface_mesher(const Particles& particles, double h, int threads,
                              const std::filesystem::path& level_set_file, bool mesh,
-                             const std::string& method);
+                             const std::string& method, double voxel_factor);
 
 }  // namespace upf

@@ -35,6 +35,7 @@ FrameWriter::FrameWriter(const std::filesystem::path& out_dir, const SceneDescri
       vdb_points_(enabled && scene.output.vdb_points),
       vdb_compression_(scene.output.vdb_compression),
       surface_method_(scene.output.surface_method),
+      surface_voxel_(scene.output.surface_voxel),
       compression_(scene.output.compress ? vtk_xml::Compression::zlib : vtk_xml::Compression::none),
       vtp_types_(scene.output.vtp_types),
       ply_types_(scene.output.ply_types),
@@ -172,7 +173,7 @@ std::string FrameWriter::write_surface(const Particles& particles) const {
       surface_vdb_ ? out_dir_ / frame_file("frames/surface_%05d.vdb", frames_)
                    : std::filesystem::path();
   const MeshPiece mesh = vdb_.surface(particles, spacing_, world_.executor().threads(), level_set,
-                                      surface_, surface_method_);
+                                      surface_, surface_method_, surface_voxel_);
   if (!surface_) return {};
   const auto ply = out_dir_ / frame_file("frames/surface_%05d.ply", frames_);
   if (ply_z_up_) {

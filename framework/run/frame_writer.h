@@ -20,13 +20,14 @@
 namespace upf {
 
 // Surfaces the liquid for the "surface" and "surface_vdb" output formats: (particles, spacing,
-// threads, level set file, mesh?, method) -> the closed mesh when asked for, and the surface's
-// level set written to the file when one is named; method: OutputDesc::surface_method. upf_surface
+// threads, level set file, mesh?, method, voxel) -> the closed mesh when asked for, and the
+// surface's level set written to the file when one is named; method and voxel (in spacings):
+// OutputDesc::surface_method and surface_voxel. upf_surface
 // (framework/output/liquid_surface.h, OpenVDB) provides one; it is a library of its own so that
 // programs which never mesh surfaces do not load OpenVDB and the threads its logging library starts
 // at load time (which make fork() unsafe under ASan).
 using SurfaceMesher = std::function<MeshPiece(
-    const Particles&, double, int, const std::filesystem::path&, bool, const std::string&)>;
+    const Particles&, double, int, const std::filesystem::path&, bool, const std::string&, double)>;
 
 // Writes the "vdb_points" frame: (file, particles, fields, spacing, compression) -> an OpenVDB
 // point data grid (framework/output/vdb_points_writer.h), from upf_surface for the same reason.
@@ -89,6 +90,7 @@ class FrameWriter {
   bool vdb_points_;   // OpenVDB point data grids (frames/points_NNNNN.vdb)
   std::string vdb_compression_;
   std::string surface_method_;
+  double surface_voxel_;
   vtk_xml::Compression compression_;
   TypeMask vtp_types_;  // the types in the .vtp frame files (frozen ones apart, see below)
   TypeMask ply_types_;

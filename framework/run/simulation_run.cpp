@@ -18,6 +18,7 @@
 #include "framework/run/run_manifest.h"
 #include "framework/run/run_totals.h"
 #include "framework/run/solver_tables.h"
+#include "framework/run/surface_memory.h"
 #include "framework/scene/scene_builder.h"
 
 namespace upf {
@@ -308,6 +309,8 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
   }
   // Before anything is written: a misspelt field stops the run with nothing but the directory.
   std::vector<std::string> fields = check_output_fields(scene, world.particles());
+  if (options.write_frames)
+    check_surface_memory(scene, world.count(ParticleType::Liquid));  // every rank: a collective
   std::size_t replaced = 0;
   const bool writes_frames =
       options.write_frames && (scene.output.vtp || scene.output.ply || scene.output.surface);

@@ -84,6 +84,10 @@ struct OutputDesc {
   // How "surface" and "surface_vdb" find the surface: "anisotropic" (Yu & Turk 2013 kernels,
   // smooth) or "spheres" (the eroded union of spheres); framework/output/liquid_surface.h.
   std::string surface_method = "anisotropic";
+  // "surface_voxel": the surface's voxel in particle spacings; "surface_memory": the bound on the
+  // memory its grids may take, checked before the first step (framework/run/surface_memory.h).
+  double surface_voxel = 0.5;
+  double surface_memory_gb = 4;
   // "compression": "zlib" compresses the .vtp arrays (VTK's vtkZLibDataCompressor layout),
   // "none" writes them as they are in memory.
   bool compress = true;

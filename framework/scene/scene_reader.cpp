@@ -498,6 +498,10 @@ void read_output(JsonInput& in, const json& doc, SceneDescription& scene) {
       in.number(*it, "/output", spec_named(specs, "size_warning"), output.size_warning_gb);
   output.probe_every =
       int(in.number(*it, "/output", spec_named(specs, "probe_every"), output.probe_every));
+  output.surface_voxel =
+      in.number(*it, "/output", spec_named(specs, "surface_voxel"), output.surface_voxel);
+  output.surface_memory_gb =
+      in.number(*it, "/output", spec_named(specs, "surface_memory"), output.surface_memory_gb);
   if (auto f = it->find("fields"); f != it->end()) read_output_fields(in, *f, output);
   if (auto f = it->find("formats"); f != it->end()) read_output_formats(in, *f, output);
   output.compress = read_choice(in, *it, "/output", "compression", {"zlib", "none"},

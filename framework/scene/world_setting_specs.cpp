@@ -50,6 +50,14 @@ std::vector<ParamSpec> output_setting_specs() {
       {"size_warning", "GB", 20, 0, 1e9,
        "upf run warns before the first step when its frames would take more than this many "
        "gigabytes (10^9 bytes; the uncompressed size, which compression only lowers)"},
+      {"surface_voxel", "spacings", 0.5, 0.05, 1,
+       "voxel size of the liquid surface's level set (formats \"surface\", \"surface_vdb\"), "
+       "in particle spacings; smaller gives a finer mesh, about 1 / voxel^2 times the triangles "
+       "and 1 / voxel^3 times the memory and time"},
+      {"surface_memory", "GB", 4, 1e-6, 1e6,
+       "the liquid surface's grids may take at most this many gigabytes (estimated before the "
+       "first step at 8 bytes per voxel of the liquid present then; a finer surface_voxel past "
+       "it is an error)"},
       {"probe_every", "steps", 1, 0, 1e9,
        "probes.csv, body_forces.csv and the grains' dem_<model>_walls.csv get a row every this "
        "many "

@@ -171,6 +171,42 @@ TEST_F(ExportFormats, SurfaceMethodPicksTheSurfacing) {
   expect_rejected(doc, {":/output/surface_method", "\"anisotropic\", \"spheres\""});
 }
 
+// "/output/surface_voxel" sets the surface's voxel (a finer voxel, a finer mesh), and a voxel
+// whose grids would pass "/output/surface_memory" is refused before the first step, with exit
+// code 2, the key, the estimate and a voxel that fits; an earlier run's frames stay.
+TEST_F(ExportFormats, SurfaceVoxelIsBoundedByTheSurfaceMemory) {
+  auto doc = tank();
+  doc["time"]["end"] = 0.001;
+  doc["output"]["formats"] = {"surface"};
+  const fs::path coarse = dir_ / "coarse";
+  Result r = run_upf("run " + write(doc) + " --out " + coarse.string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  doc["output"]["surface_voxel"] = 0.25;
+  const fs::path fine = dir_ / "fine";
+  r = run_upf("run " + write(doc) + " --out " + fine.string() + " --threads 1 -q");
+  ASSERT_EQ(r.code, 0) << r.output;
+  // About four times the triangles at half the voxel.
+  const auto size = [](const fs::path& f) { return double(fs::file_size(f)); };
+  const double ratio =
+      size(fine / "frames" / "surface_00000.ply") / size(coarse / "frames" / "surface_00000.ply");
+  EXPECT_GT(ratio, 3.0);
+  EXPECT_LT(ratio, 5.5);
+
+  // 150 liquid particles at a voxel of 0.25 spacings: 8 * 150 * 64 = 76,800 bytes; the voxel
+  // that fits 50,000 is 0.25 * cbrt(76,800 / 50,000) = 0.288 spacings.
+  doc["output"]["surface_memory"] = 5e-5;
+  const std::string before = read_text(fine / "frames" / "surface_00000.ply");
+  r = run_upf("run " + write(doc) + " --out " + fine.string() + " --overwrite --threads 1 -q");
+  EXPECT_EQ(r.code, 2) << r.output;
+  for (const char* needle : {":/output/surface_voxel", "7.68e-05 GB", "/output/surface_memory",
+                             "a voxel of at least 0.288 spacings fits"})
+    EXPECT_NE(r.output.find(needle), std::string::npos) << needle << "\n" << r.output;
+  EXPECT_EQ(read_text(fine / "frames" / "surface_00000.ply"), before);
+
+  doc["output"]["surface_voxel"] = 0.01;
+  expect_rejected(doc, {":/output/surface_voxel", "[0.05, 1]"});
+}
+
 // Blender 3.4's own PLY importer shows a point cloud without colours (it keeps colours only on
 // faces); scripts/blender_upf.py opens the run with the colours and every property as point
 // attributes, and follows the timeline (tests/cli/check_blender_import.py, in Blender headless).
