@@ -83,13 +83,16 @@ TEST(WorldSettingSpecs, DefaultsAreTheSettingsOfASceneWithoutThem) {
   EXPECT_EQ(find_spec(time, "fixed_dt")->default_value, world.time.fixed_dt);
   EXPECT_EQ(stability_setting_specs().at(0).default_value, world.max_speed);
   EXPECT_EQ(neighbour_setting_specs().at(0).default_value, double(world.reorder_every));
-  EXPECT_EQ(output_setting_specs().at(0).default_value, output.fps);
-  EXPECT_EQ(output_setting_specs().at(1).default_value, output.size_warning_gb);
-  EXPECT_EQ(output_setting_specs().at(2).default_value, double(output.probe_every));
+  const auto out = output_setting_specs();
+  EXPECT_EQ(find_spec(out, "fps")->default_value, output.fps);
+  EXPECT_EQ(find_spec(out, "size_warning")->default_value, output.size_warning_gb);
+  EXPECT_EQ(find_spec(out, "surface_voxel")->default_value, output.surface_voxel);
+  EXPECT_EQ(find_spec(out, "surface_memory")->default_value, output.surface_memory_gb);
+  EXPECT_EQ(find_spec(out, "probe_every")->default_value, double(output.probe_every));
   // One spec per number the reader reads: a new key gets a spec, or this count trips.
   EXPECT_EQ(time.size() + stability_setting_specs().size() + neighbour_setting_specs().size() +
-                output_setting_specs().size(),
-            10u);
+                out.size(),
+            12u);
 }
 
 }  // namespace
