@@ -7,20 +7,12 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
+
+#include "framework/core/wendland.h"
 
 namespace upf {
 
 namespace {
-
-// Wendland C2 normalisation in 3D for support 1: the kernel 21 / (2 pi) (1 - q)^4 (1 + 4 q)
-// integrates to 1 over the unit ball.
-constexpr double kWendland3d = 21.0 / (2.0 * std::numbers::pi);
-
-double wendland_shape(double q) {
-  const double a = 1 - q;
-  return a * a * a * a * (1 + 4 * q);
-}
 
 double covariance_weight(double distance, double radius) {
   const double x = distance / radius;
@@ -138,7 +130,7 @@ std::vector<AnisotropicKernel> anisotropic_kernels(const std::vector<Eigen::Vect
     }
     k.g = axes * stretch.cwiseInverse().asDiagonal() * axes.transpose() / support;
     const double det = 1.0 / (support * support * support * stretch.prod());
-    k.amplitude = h * h * h * det * kWendland3d;
+    k.amplitude = h * h * h * det;
     // The support is the ellipsoid A B with A = G^-1 and B the unit ball; its extent along
     // world axis e is the length of row e of A.
     const Eigen::Matrix3d a = axes * (support * stretch).asDiagonal() * axes.transpose();
@@ -180,7 +172,7 @@ double KernelField::operator()(const Eigen::Vector3d& x) const {
     const Eigen::Vector3d d = x - k.centre;
     if ((d.cwiseAbs().array() >= k.extent.array()).any()) continue;
     const double q = (k.g * d).norm();
-    if (q < 1) sum += k.amplitude * wendland_shape(q);
+    sum += k.amplitude * wendland_3d(q, 1.0);
   }
   return sum;
 }

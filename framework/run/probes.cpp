@@ -4,26 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "framework/core/wendland.h"
+
 namespace upf {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-
-// Wendland C2 kernels of support radius r at distance d (Wendland 1995; the normalisations of
-// Dehnen & Aly 2012): each integrates to one over the plane (2D) or space (3D).
-double wendland_2d(double d, double r) {
-  const double q = d / r;
-  if (q >= 1) return 0;
-  const double a = 1 - q;
-  return 7 / (kPi * r * r) * a * a * a * a * (1 + 4 * q);
-}
-double wendland_3d(double d, double r) {
-  const double q = d / r;
-  if (q >= 1) return 0;
-  const double a = 1 - q;
-  return 21 / (2 * kPi * r * r * r) * a * a * a * a * (1 + 4 * q);
-}
-
 bool inside(const Box& box, const Vec3& x) {
   for (int a = 0; a < 3; ++a)
     if (double(x[a]) < box.min[a] || double(x[a]) > box.max[a]) return false;
