@@ -51,7 +51,7 @@ struct AnisotropyParameters {
 struct AnisotropicKernel {
   Eigen::Vector3d centre;
   Eigen::Matrix3d g;       // G_i: maps an offset from the centre to the kernel's unit ball
-  double amplitude;        // h^3 det(G_i) times Wendland's normalisation
+  double amplitude;        // h^3 det(G_i); W_i = amplitude wendland_3d(q, 1)
   Eigen::Vector3d extent;  // half-sizes of the support's bounding box about the centre
 };
 
