@@ -45,6 +45,10 @@ void check_covered(const World& world, const std::string& where) {
   setup.rest_density = fluid.table.rest_density;
   setup.viscosity = fluid.table.viscosity;
   setup.boundary_viscosity = fluid.table.boundary_viscosity;
+  setup.surface_model = fluid.table.surface_model;
+  setup.cohesion = fluid.table.cohesion;
+  setup.adhesion = fluid.table.adhesion;
+  setup.has_adhesion = fluid.table.has_adhesion;
   setup.owns.resize(world.materials().size());
   for (std::size_t m = 0; m < setup.owns.size(); ++m)
     setup.owns[m] = fluid.owned.owns(MaterialId(m)) ? 1 : 0;

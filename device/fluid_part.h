@@ -44,6 +44,8 @@ class FluidPart final : public SolverPart<Backend> {
     copy_to_device(rest_density_, setup_.rest_density);
     copy_to_device(viscosity_, setup_.viscosity);
     copy_to_device(boundary_viscosity_, setup_.boundary_viscosity);
+    copy_to_device(cohesion_, setup_.cohesion);
+    copy_to_device(adhesion_, setup_.adhesion);
     copy_to_device(owns_, setup_.owns);
     fluid_list_ = state.lists.request(kLiquidMask, kLiquidMask);
     boundary_list_ = state.lists.request(kLiquidMask, kBoundaryMask);
@@ -64,7 +66,7 @@ class FluidPart final : public SolverPart<Backend> {
     return bytes_of(owned_) + bytes_of(fluid_gradient_) + bytes_of(boundary_gradient_) +
            bytes_of(other_acceleration_) + bytes_of(pressure_acceleration_) + method_.bytes() +
            bytes_of(rest_density_) + bytes_of(viscosity_) + bytes_of(boundary_viscosity_) +
-           bytes_of(owns_);
+           bytes_of(cohesion_) + bytes_of(adhesion_) + bytes_of(surface_normal_) + bytes_of(owns_);
   }
 
   void step(PipelineState<Backend>& state, Real dt) override {
@@ -91,16 +93,18 @@ class FluidPart final : public SolverPart<Backend> {
       boundary_gradient_.resize(n);
       other_acceleration_.resize(n);
       pressure_acceleration_.resize(n);
+      surface_normal_.resize(setup_.surface_model != SurfaceTensionModel::None ? n : 0);
       step.f = fluid_view(state);
       step.fluid_gradient =
           setup_.store_gradients ? FluidGradients(raw<Vec3>(fluid_gradient_)) : FluidGradients();
       step.boundary_gradient = raw<Vec3>(boundary_gradient_);
       step.other_acceleration = raw<Vec3>(other_acceleration_);
       step.pressure_acceleration = raw<Vec3>(pressure_acceleration_);
-      run_non_pressure_stages(exec, step.owned, step.f,
-                              {step.fluid_gradient, step.boundary_gradient, step.other_acceleration,
-                               step.density, liquid_force, step.pressure},
-                              state.world.gravity);
+      run_non_pressure_stages(
+          exec, step.owned, step.f,
+          {step.fluid_gradient, step.boundary_gradient, step.other_acceleration, step.density,
+           liquid_force, step.pressure, step.f.surface.on() ? raw<Vec3>(surface_normal_) : nullptr},
+          state.world.gravity);
       method_.non_pressure(exec, step);
     });
 
@@ -142,6 +146,12 @@ class FluidPart final : public SolverPart<Backend> {
     f.boundary = state.lists.view(boundary_list_);
     f.kernel = CubicSplineKernel(state.world.support_radius);
     f.wall_pressure = setup_.wall_pressure;
+    f.surface.model = setup_.surface_model;
+    f.surface.cohesion = raw<Real>(cohesion_);
+    f.surface.adhesion = raw<Real>(adhesion_);
+    f.surface.materials = std::uint32_t(setup_.rest_density.size());
+    f.surface.has_adhesion = setup_.has_adhesion;
+    if (f.surface.on()) f.surface.normal = raw<Vec3>(surface_normal_);
     return f;
   }
 
@@ -150,10 +160,11 @@ class FluidPart final : public SolverPart<Backend> {
   StageRunner stages_;
   SolverStats stats_;
   int fluid_list_ = -1, boundary_list_ = -1, reaction_list_ = -1;
-  vector<Real> rest_density_, viscosity_, boundary_viscosity_;
+  vector<Real> rest_density_, viscosity_, boundary_viscosity_, cohesion_, adhesion_;
   vector<std::uint8_t> owns_;
   vector<std::uint32_t> owned_;
-  vector<Vec3> fluid_gradient_, boundary_gradient_, other_acceleration_, pressure_acceleration_;
+  vector<Vec3> fluid_gradient_, boundary_gradient_, other_acceleration_, pressure_acceleration_,
+      surface_normal_;
   vector<Real>* density_ = nullptr;
   vector<Real>* pressure_ = nullptr;
 };

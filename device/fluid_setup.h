@@ -9,6 +9,7 @@
 
 #include "framework/core/vec3.h"
 #include "solvers/dfsph/dfsph_steps.h"
+#include "solvers/fluid/surface_force_view.h"
 #include "solvers/iisph/iisph_solve.h"
 #include "solvers/pcisph/pcisph_correction_loop.h"
 #include "solvers/sph/sph_steps.h"
@@ -20,6 +21,11 @@ struct FluidSetup {
   // Per material: FluidMaterialTable's constants and whether the solver moves it.
   std::vector<Real> rest_density, viscosity, boundary_viscosity;
   std::vector<std::uint8_t> owns;
+  // FluidMaterialTable's surface tension: the model, per material its coefficient, per pair
+  // Akinci's beta (SurfaceForceView).
+  SurfaceTensionModel surface_model = SurfaceTensionModel::None;
+  std::vector<Real> cohesion, adhesion;
+  bool has_adhesion = false;
   bool reactions = false;  // rigid particles whose reactions a body system sums
   // Keep grad W_ij per fluid pair (12 B a pair, as the CPU path does) instead of recomputing it
   // where used: the same bits either way (FluidGradients).

@@ -2,6 +2,7 @@
 // its particle type and its parameter table, and names the solver that moves its particles.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,10 @@ struct Material {
   ParamValues params;
   std::string solver;  // empty when nothing moves it
   ParamValues solver_params;
+  // Liquids: the surface tension model (scene key "surface_tension_model"; empty: the first one
+  // registered) and Akinci's adhesion coefficient toward each named boundary material ("adhesion").
+  std::string surface_tension_model;
+  std::map<std::string, double> adhesion;
 
   double param(const std::string& n) const { return params.get(n); }
 };

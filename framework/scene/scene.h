@@ -34,6 +34,8 @@ struct FluidBlockDesc {
   std::string material;
   Box box;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  // "shape": the whole box, or the ball (ellipsoid) inscribed in it: drops.
+  bool ball = false;
 };
 
 enum class ProbeKind { Extent, Height, Pressure };

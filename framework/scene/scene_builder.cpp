@@ -26,14 +26,17 @@ void add_container_walls(Particles& particles, const Box& box, Real spacing, int
 }
 
 void add_fluid_block(Particles& particles, const Box& box, Real spacing, const Vec3& velocity,
-                     Real particle_mass, MaterialId material) {
+                     Real particle_mass, MaterialId material, bool ball) {
   const Lattice n = fluid_lattice_size(box, spacing);
+  const Eigen::Vector3d centre = 0.5 * (box.min + box.max);
+  const Eigen::Vector3d radii = 0.5 * (box.max - box.min);
   for (std::int64_t k = 0; k < n[2]; ++k)
     for (std::int64_t j = 0; j < n[1]; ++j)
       for (std::int64_t i = 0; i < n[0]; ++i) {
         const Eigen::Vector3d x =
             box.min +
             Eigen::Vector3d(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5) * double(spacing);
+        if (ball && (x - centre).cwiseQuotient(radii).squaredNorm() > 1) continue;
         particles.add(to_vec3(x), velocity, particle_mass, ParticleType::Liquid, material);
       }
 }
@@ -62,7 +65,7 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
     const MaterialId id = *world->materials().find(b.material);
     // m = rho0 h^3: on the initial lattice the SPH density sum then gives rho0.
     const Real mass = Real(world->materials()[id].param("density")) * h * h * h;
-    add_fluid_block(p, b.box, h, to_vec3(b.velocity), mass, id);
+    add_fluid_block(p, b.box, h, to_vec3(b.velocity), mass, id, b.ball);
   }
 
   for (const auto& section : scene.sections)

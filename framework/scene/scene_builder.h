@@ -17,7 +17,9 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
 // box, the first at half a spacing from each face (fluid particles start half a spacing inside).
 void add_container_walls(Particles& particles, const Box& box, Real spacing, int layers,
                          MaterialId material);
+// The liquid lattice of a fluid block: the whole box, or with `ball` the points inside the
+// ellipsoid inscribed in it.
 void add_fluid_block(Particles& particles, const Box& box, Real spacing, const Vec3& velocity,
-                     Real particle_mass, MaterialId material);
+                     Real particle_mass, MaterialId material, bool ball = false);
 
 }  // namespace upf

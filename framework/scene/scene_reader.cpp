@@ -10,6 +10,7 @@
 
 #include "framework/core/file_name.h"
 #include "framework/scene/json_input.h"
+#include "framework/scene/surface_tension_keys.h"
 #include "framework/scene/world_setting_specs.h"
 
 namespace upf {
@@ -96,6 +97,10 @@ void read_material(JsonInput& in, const json& node, const std::string& name,
     auto v =
         in.required_number(node, path, spec.name, spec.min_value, spec.max_value, false, spec.unit);
     if (v) m.params.set(spec.name, *v);
+  }
+  if (kind->type == ParticleType::Liquid) {
+    allowed.insert(allowed.end(), surface_tension_keys().begin(), surface_tension_keys().end());
+    read_surface_tension_keys(in, node, path, registry, m);
   }
   in.check_keys(node, path, allowed);
 
@@ -316,6 +321,7 @@ void read_materials(JsonInput& in, const json& doc, const Registry& registry,
                    "parameters of solver '" + ma.solver + "' differ from those of material '" +
                        mb.name + "'; materials sharing a solver must share its parameters");
     }
+  check_surface_tension_keys(in, registry, scene);
 }
 
 // /containers: boxes of frozen wall particles.
@@ -339,8 +345,16 @@ void read_containers(JsonInput& in, const json& doc, double h, SceneDescription&
 void read_fluid_blocks(JsonInput& in, const json& doc, double h, SceneDescription& scene) {
   std::vector<std::pair<std::string, Box>> earlier;  // every block read so far, with its path
   in.for_each_object(doc, "", "fluid_blocks", [&](const json& b, const std::string& path) {
-    in.check_keys(b, path, {"material", "min", "max", "velocity"});
+    in.check_keys(b, path, {"material", "min", "max", "velocity", "shape"});
     FluidBlockDesc desc;
+    if (auto shape = in.string(b, path, "shape", false)) {
+      desc.ball = *shape == "ball";
+      if (*shape != "ball" && *shape != "box")
+        in.problem(JsonInput::child(path, "shape"),
+                   "unknown shape '" + *shape +
+                       "'; allowed: 'box' (the default), 'ball' (the "
+                       "ball, or ellipsoid, inscribed in the box)");
+    }
     auto mat = in.string(b, path, "material", true);
     const bool mat_ok =
         mat && check_material_ref(in, scene, *mat, JsonInput::child(path, "material"),

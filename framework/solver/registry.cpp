@@ -9,6 +9,13 @@ void Registry::add_solver(SolverInfo info) {
   solvers_.push_back(std::move(info));
 }
 
+void Registry::add_surface_tension_model(SurfaceTensionModelInfo info) {
+  for (const auto& m : surface_models_)
+    if (m.name == info.name)
+      throw std::logic_error("surface tension model '" + info.name + "' registered twice");
+  surface_models_.push_back(std::move(info));
+}
+
 void Registry::add_material_kind(MaterialKind kind) {
   if (find_material_kind(kind.name))
     throw std::logic_error("material kind '" + kind.name + "' registered twice");

@@ -31,9 +31,18 @@ struct SolverInfo {
   CouplingUse coupling;
 };
 
+// A surface tension model the liquids may name (scene key "surface_tension_model"); the shared
+// fluid pieces implement it (solvers/fluid/surface_forces.h). The first registered is the default.
+struct SurfaceTensionModelInfo {
+  std::string name;  // "akinci2013"
+  std::string summary;
+  std::string reference;  // the paper
+};
+
 class Registry {
  public:
   void add_solver(SolverInfo info);
+  void add_surface_tension_model(SurfaceTensionModelInfo info);
   void add_material_kind(MaterialKind kind);
   void add_scene_section(SceneSection section);
 
@@ -41,6 +50,9 @@ class Registry {
   const MaterialKind* find_material_kind(const std::string& name) const;
   const std::vector<SolverInfo>& solvers() const { return solvers_; }
   const std::vector<MaterialKind>& material_kinds() const { return kinds_; }
+  const std::vector<SurfaceTensionModelInfo>& surface_tension_models() const {
+    return surface_models_;
+  }
   const SceneSection* find_scene_section(const std::string& key) const;
   const std::vector<SceneSection>& scene_sections() const { return sections_; }
 
@@ -48,6 +60,7 @@ class Registry {
   std::vector<SolverInfo> solvers_;
   std::vector<MaterialKind> kinds_;
   std::vector<SceneSection> sections_;
+  std::vector<SurfaceTensionModelInfo> surface_models_;
 };
 
 }  // namespace upf

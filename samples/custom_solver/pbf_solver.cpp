@@ -96,7 +96,7 @@ void PbfSolver::prepare(World& world) {
 }
 
 Real PbfSolver::max_time_step(const World& world) const {
-  return fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
+  return fluid_cfl_time_step(world, fluid_.force_limits(), reference_speed_);
 }
 
 void PbfSolver::predict(World& world, const FluidView& f, Real dt) {

@@ -64,7 +64,7 @@ void DfsphSolver::prepare(World& world) {
 }
 
 Real DfsphSolver::max_time_step(const World& world) const {
-  return fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
+  return fluid_cfl_time_step(world, fluid_.force_limits(), reference_speed_);
 }
 
 std::vector<std::string> DfsphSolver::stages() const {

@@ -5,10 +5,12 @@
 // Every fluid solver here writes its boundary pressure acceleration as
 //   a_i = -rho0_i P_i sum_b V_b grad W_ib,
 // with P_i its own pressure factor (PCISPH p_i/rho0^2, WCSPH p_i/rho_i^2, SPH p_i/(2 rho_i^2)),
-// and the shared boundary viscosity of fluid_forces.h. So the reaction on b is
+// the shared boundary viscosity of fluid_forces.h and Akinci et al. 2013's adhesion
+// (surface_forces.h). So the reaction on b is
 //   F_b = sum_i m_i [ rho0_i P_i V_b grad W_ib
 //                     - 10 nu_b,i rho0_i V_b / rho_i (v_ib . x_ib) / (|x_ib|^2 + 0.01 H^2) grad
-//                     W_ib ]
+//                     W_ib
+//                     + beta rho0_i V_b A(|x_ib|) x_ib / |x_ib| ]
 // gathered over b's fluid neighbours: no scatter, no atomics, the same bits for any thread
 // count. The pairs cancel exactly up to rounding, so fluid and bodies together conserve momentum.
 #pragma once
@@ -18,6 +20,7 @@
 #include "framework/executors/particle_range.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
+#include "solvers/fluid/surface_forces.h"
 
 namespace upf {
 
@@ -58,6 +61,7 @@ struct BoundaryReactionStage {
                                           (squared_norm(xib) + Real(0.01) * h2));
       }
       sum += pair * f.mass[i];
+      if (f.surface.has_adhesion) sum += akinci_adhesion_reaction(f, i, b);
     }
     force[b] += sum;
   }

@@ -16,7 +16,9 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   // Reactions are gathered from the rigid side: for each rigid particle, its liquid neighbours.
   if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)
     reaction_list = world.request_neighbours(mask_of(ParticleType::Rigid), kLiquidMask);
-  table.load(world);
+  table.load(world, materials);
+  surface_tension = table.surface_model != SurfaceTensionModel::None;
+  if (surface_tension) surface_normal_field = p.declare_scratch_vector("fluid.surface_normal");
   owned.set_materials(world.materials().size(), materials);
   max_viscosity = 0;
   for (MaterialId m : materials) max_viscosity = std::max(max_viscosity, table.viscosity[m]);
@@ -31,6 +33,8 @@ FluidView FluidSolverState::begin_step(World& world) {
   pressure_acceleration = world.particles()[pressure_acceleration_field].data();
   FluidView f = make_fluid_view(world, table, lists);
   f.wall_pressure = wall_pressure;
+  surface_normal = surface_tension ? world.particles()[surface_normal_field].data() : nullptr;
+  f.surface.normal = surface_normal;
   return f;
 }
 
@@ -47,10 +51,11 @@ void FluidSolverState::shared_forces(const World& world, const FluidView& f, Rea
                                  ? world.coupling()[CouplingArray::LiquidForce].data()
                                  : nullptr;
   const Real* pressure = world.particles()[pressure_field].data();
-  run_non_pressure_stages(world.executor(), owned.range(), f,
-                          {fluid_gradient.data(), boundary_gradient.data(),
-                           other_acceleration.data(), density, liquid_force, pressure},
-                          world.settings().gravity);
+  run_non_pressure_stages(
+      world.executor(), owned.range(), f,
+      {fluid_gradient.data(), boundary_gradient.data(), other_acceleration.data(), density,
+       liquid_force, pressure, surface_normal},
+      world.settings().gravity);
 }
 
 void FluidSolverState::predict_unowned(const World& world, const FluidView& f, Vec3* x_star,

@@ -2,7 +2,8 @@
 // fluid solvers isolates the pressure solver (DESIGN.md, "Solvers"):
 //   begin_step       the owned index list and the view of the current state;
 //   shared_forces    "non_pressure": density and kernel gradients at the current positions, then
-//                    a_other = g + viscosity (fluid_forces.h) + the force of other materials
+//                    a_other = g + viscosity (fluid_forces.h) + surface tension and adhesion
+//                    (surface_forces.h, when a liquid has a sigma) + the force of other materials
 //                    (CouplingArray::LiquidForce: grains' drag and buoyancy reactions) / m;
 //   add_reactions    the reactions on rigid boundary particles (boundary_reactions.h), at the
 //                    positions and velocities the forces used, so before integrate;
@@ -15,6 +16,7 @@
 #include "framework/world/world.h"
 #include "solvers/fluid/boundary_reactions.h"
 #include "solvers/fluid/fluid_stages.h"
+#include "solvers/fluid/fluid_time_step.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
 
@@ -35,6 +37,8 @@ struct FluidSolverState {
   int reaction_list = -1;  // rigid -> liquid, when a body system collects reactions
   OwnedParticles owned;
   Real max_viscosity = 0;  // [m^2/s] largest kinematic viscosity of the owned materials
+  // The time-step limits of the owned materials' viscosity and surface tension.
+  FluidForceLimits force_limits() const { return {max_viscosity, table.max_sigma_over_density}; }
   FieldHandle<Real> density_field, pressure_field;  // the exported fields every fluid solver writes
 
   // Per-step buffers, rewritten every step (so they need no reordering with the particles).
@@ -45,6 +49,11 @@ struct FluidSolverState {
   // ghosts on other ranks must carry it (particle_domain.h); begin_step points at its values.
   FieldHandle<Vec3> pressure_acceleration_field;
   Vec3* pressure_acceleration = nullptr;
+  // Per particle, with surface tension on: Akinci's normals (surface_forces.h). A field, because
+  // neighbours read it and ghosts on other ranks must carry it.
+  FieldHandle<Vec3> surface_normal_field;
+  bool surface_tension = false;
+  Vec3* surface_normal = nullptr;  // begin_step points it at the field's values
 
   // Creates the exported fields `density` and `pressure`, requests the neighbour lists and loads
   // the constants of `materials`.

@@ -7,6 +7,7 @@
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
+#include "solvers/fluid/surface_forces.h"
 
 namespace upf {
 
@@ -21,8 +22,21 @@ struct DensityAndGradientsStage {
   }
 };
 
-// a_other = g + the shared viscosity (fluid_forces.h) + the wall pressure's hydrostatic part
-// (boundary_pressure.h; with f.wall_pressure only).
+// Akinci's surface normals n_i (surface_forces.h), which the
+// surface tension of i's neighbours reads: a pass of its own, after the densities.
+struct SurfaceNormalStage {
+  FluidView f;
+  const Real* density;
+  FluidGradients fluid_gradient;
+  Vec3* normal;
+  UPF_HD void operator()(std::uint32_t i) const {
+    normal[i] = akinci_normal(f, density, fluid_gradient, i);
+  }
+};
+
+// a_other = g + the shared viscosity (fluid_forces.h) + surface tension and adhesion (with
+// f.surface on; surface_forces.h) + the wall pressure's hydrostatic part (boundary_pressure.h;
+// with f.wall_pressure only).
 struct GravityAndViscosityStage {
   FluidView f;
   const Real* density;
@@ -32,6 +46,7 @@ struct GravityAndViscosityStage {
   Vec3* a_other;
   UPF_HD void operator()(std::uint32_t i) const {
     Vec3 a = gravity + viscosity_acceleration(f, density, fluid_gradient, i);
+    if (f.surface.on()) a += surface_acceleration(f, density, i);
     if (f.wall_pressure) a += boundary_hydrostatic_acceleration(f, pressure, gravity, i);
     a_other[i] = a;
   }
@@ -92,8 +107,10 @@ struct CompressionValue {
 };
 
 // The non-pressure part every fluid solver's step starts with, for any executor (the CPU's, or
-// the device pipeline's): density and kernel gradients at the current positions, then
-// a_other = g + viscosity, plus F / m from other materials when `liquid_force` is not null.
+// the device pipeline's): density and kernel gradients at the current positions, the surface
+// normals when f.surface is on (into `surface_normal`, the array f.surface.normal reads), then
+// a_other = g + viscosity + surface forces, plus F / m from other materials when `liquid_force`
+// is not null.
 struct NonPressureArrays {
   FluidGradients fluid_gradient;
   Vec3* boundary_gradient;
@@ -101,12 +118,15 @@ struct NonPressureArrays {
   Real* density;
   const Vec3* liquid_force;  // CouplingArray::LiquidForce, or null
   const Real* pressure;      // at the step's start: the wall pressure's hydrostatic part
+  Vec3* surface_normal;      // with f.surface on: per particle, f.surface.normal's array
 };
 
 template <class Executor>
 void run_non_pressure_stages(const Executor& exec, ParticleRange owned, const FluidView& f,
                              const NonPressureArrays& a, const Vec3& gravity) {
   exec.run(owned, DensityAndGradientsStage{f, a.fluid_gradient, a.boundary_gradient, a.density});
+  if (f.surface.on())
+    exec.run(owned, SurfaceNormalStage{f, a.density, a.fluid_gradient, a.surface_normal});
   exec.run(owned, GravityAndViscosityStage{f, a.density, a.fluid_gradient, a.pressure, gravity,
                                            a.other_acceleration});
   if (a.liquid_force)

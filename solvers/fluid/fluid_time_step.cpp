@@ -25,11 +25,21 @@ Real free_fall_speed(const World& world) {
 }
 
 namespace {
-// 0.125 H^2 / nu (Morris et al. 1997), or no limit without viscosity.
-Real viscous_time_step(const WorldSettings& s, Real max_viscosity) {
-  if (max_viscosity <= 0) return std::numeric_limits<Real>::max();
-  const Real h = s.support_radius();
-  return Real(0.125) * h * h / max_viscosity;
+// 0.125 H^2 / nu (Morris et al. 1997) and 0.25 sqrt(s^3 / (2 pi sigma / rho0)) (Brackbill et al.
+// 1992; Adami et al. 2010), or no limit without viscosity and surface tension.
+Real force_time_step(const WorldSettings& s, const FluidForceLimits& limits) {
+  Real dt = std::numeric_limits<Real>::max();
+  if (limits.max_viscosity > 0) {
+    const Real h = s.support_radius();
+    dt = Real(0.125) * h * h / limits.max_viscosity;
+  }
+  if (limits.max_sigma_over_density > 0) {
+    constexpr Real kTwoPi = Real(6.28318530717958647692);
+    const Real spacing_cubed = s.spacing * s.spacing * s.spacing;
+    dt = std::min(dt,
+                  Real(0.25) * std::sqrt(spacing_cubed / (kTwoPi * limits.max_sigma_over_density)));
+  }
+  return dt;
 }
 
 Real max_liquid_speed(const World& world) {
@@ -37,20 +47,21 @@ Real max_liquid_speed(const World& world) {
 }
 }  // namespace
 
-Real fluid_cfl_time_step(const World& world, Real max_viscosity, Real reference_speed) {
+Real fluid_cfl_time_step(const World& world, const FluidForceLimits& limits, Real reference_speed) {
   const auto& s = world.settings();
   Real dt = std::numeric_limits<Real>::max();
   const Real vmax = std::max(reference_speed, max_liquid_speed(world));
   if (vmax > 0) dt = Real(s.time.cfl) * s.spacing / vmax;
-  return std::min(dt, viscous_time_step(s, max_viscosity));
+  return std::min(dt, force_time_step(s, limits));
 }
 
-Real sound_speed_time_step(const World& world, Real cfl, Real sound_speed, Real max_viscosity) {
+Real sound_speed_time_step(const World& world, Real cfl, Real sound_speed,
+                           const FluidForceLimits& limits) {
   const auto& s = world.settings();
   Real dt = std::numeric_limits<Real>::max();
   const Real signal_speed = sound_speed + max_liquid_speed(world);
   if (signal_speed > 0) dt = cfl * s.spacing / signal_speed;
-  return std::min(dt, viscous_time_step(s, max_viscosity));
+  return std::min(dt, force_time_step(s, limits));
 }
 
 }  // namespace upf

@@ -1,8 +1,10 @@
 // The time-step limits every fluid solver shares: the CFL condition
 //   dt <= cfl * spacing / max(|v|max, v_ref)
-// (Courant, Friedrichs & Lewy 1928, in the particle form of Monaghan 1992) and the viscous limit
-// dt <= 0.125 H^2 / nu (Morris et al. 1997). v_ref = sqrt(2 g H), H the height of the liquid along
-// gravity, is the speed the flow can reach by falling: a scene at rest still gets a step that
+// (Courant, Friedrichs & Lewy 1928, in the particle form of Monaghan 1992), the viscous limit
+// dt <= 0.125 H^2 / nu (Morris et al. 1997) and, with surface tension, the capillary limit
+// dt <= 0.25 sqrt(rho0 s^3 / (2 pi sigma)) (Brackbill, Kothe & Zemach 1992, with the factor of
+// Adami, Hu & Adams 2010), s the particle spacing. v_ref = sqrt(2 g H), H the height of the liquid
+// along gravity, is the speed the flow can reach by falling: a scene at rest still gets a step that
 // resolves the motion it is about to have (without it, PCISPH at rest ran at dt_max and blew up
 // at the tank corners: 4 ms at 2 cm spacing, 2 ms at 1.25 cm).
 #pragma once
@@ -15,12 +17,20 @@ namespace upf {
 
 class World;
 
-Real fluid_cfl_time_step(const World& world, Real max_viscosity, Real reference_speed);
+// The limits of the forces beside the pressure: the largest kinematic viscosity [m^2/s] and the
+// largest sigma / rho0 [m^3/s^2] of the solver's liquids.
+struct FluidForceLimits {
+  Real max_viscosity = 0;
+  Real max_sigma_over_density = 0;
+};
+
+Real fluid_cfl_time_step(const World& world, const FluidForceLimits& limits, Real reference_speed);
 
 // For solvers whose pressure waves travel at a speed of sound c (SPH's sqrt(k), WCSPH's c):
 //   dt <= cfl * spacing / (c + |v|max)
-// and the viscous limit above.
-Real sound_speed_time_step(const World& world, Real cfl, Real sound_speed, Real max_viscosity);
+// and the force limits above.
+Real sound_speed_time_step(const World& world, Real cfl, Real sound_speed,
+                           const FluidForceLimits& limits);
 
 // sqrt(2 |g| H) with H the extent of the liquid along gravity (0 without gravity or liquid).
 Real free_fall_speed(const World& world);

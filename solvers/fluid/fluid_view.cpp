@@ -1,19 +1,51 @@
 #include "solvers/fluid/fluid_view.h"
 
+#include <algorithm>
+
 #include "framework/world/world.h"
+#include "solvers/fluid/surface_tension_models.h"
 
 namespace upf {
 
-void FluidMaterialTable::load(const World& world) {
+void FluidMaterialTable::load(const World& world, const std::vector<MaterialId>& materials) {
   const auto& mats = world.materials().all();
-  rest_density.assign(mats.size(), 0);
-  viscosity.assign(mats.size(), 0);
-  boundary_viscosity.assign(mats.size(), 0);
-  for (std::size_t m = 0; m < mats.size(); ++m) {
+  const std::size_t n = mats.size();
+  rest_density.assign(n, 0);
+  viscosity.assign(n, 0);
+  boundary_viscosity.assign(n, 0);
+  for (std::size_t m = 0; m < n; ++m) {
     if (mats[m].type != ParticleType::Liquid) continue;
     rest_density[m] = Real(mats[m].param("density"));
     viscosity[m] = Real(mats[m].param("viscosity"));
     boundary_viscosity[m] = Real(mats[m].param("boundary_viscosity"));
+  }
+  // Surface tension: the model of the solver's liquids with a sigma (the scene reader made them
+  // agree); every liquid's coefficient under it, so that a neighbour of another solver pulls too.
+  surface_model = SurfaceTensionModel::None;
+  for (MaterialId m : materials)
+    if (mats[m].param("surface_tension") > 0)
+      surface_model = surface_tension_model_named(mats[m].surface_tension_model);
+  cohesion.assign(n, 0);
+  adhesion.assign(n * n, 0);
+  has_adhesion = false;
+  max_sigma_over_density = 0;
+  if (surface_model == SurfaceTensionModel::None) return;
+  const double support = world.settings().support_radius();
+  const double spacing = world.settings().spacing;
+  for (std::size_t m = 0; m < n; ++m) {
+    if (mats[m].type != ParticleType::Liquid) continue;
+    const double sigma = mats[m].param("surface_tension");
+    cohesion[m] =
+        Real(surface_tension_coefficient(surface_model, sigma, rest_density[m], spacing, support));
+    // Adhesion is a ratio to Akinci's gamma whatever the model (docs/surface-tension.md).
+    const double gamma = akinci_gamma_for_sigma(sigma, rest_density[m], spacing, support);
+    max_sigma_over_density = std::max(max_sigma_over_density, Real(sigma) / rest_density[m]);
+    for (const auto& [name, ratio] : mats[m].adhesion) {
+      const auto boundary = world.materials().find(name);
+      if (!boundary || ratio <= 0) continue;
+      adhesion[m * n + *boundary] = Real(ratio * gamma);
+      has_adhesion = has_adhesion || gamma > 0;
+    }
   }
 }
 
@@ -38,6 +70,11 @@ FluidView make_fluid_view(const World& world, const FluidMaterialTable& material
   view.fluid = view_of(world.neighbours(lists.fluid));
   view.boundary = view_of(world.neighbours(lists.boundary));
   view.kernel = world.kernel();
+  view.surface.model = materials.surface_model;
+  view.surface.cohesion = materials.cohesion.data();
+  view.surface.adhesion = materials.adhesion.data();
+  view.surface.materials = std::uint32_t(materials.rest_density.size());
+  view.surface.has_adhesion = materials.has_adhesion;
   return view;
 }
 

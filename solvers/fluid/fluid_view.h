@@ -9,6 +9,7 @@
 #include "framework/kernels/cubic_spline.h"
 #include "framework/neighbours/neighbour_list.h"
 #include "framework/particles/particles.h"
+#include "solvers/fluid/surface_force_view.h"
 
 namespace upf {
 
@@ -29,6 +30,7 @@ struct FluidView {
   CubicSplineKernel kernel;
   // Walls and bodies carry the pressure of boundary_pressure.h; else Akinci et al.'s term alone.
   bool wall_pressure = false;
+  SurfaceForceView surface;  // surface tension and adhesion (surface_forces.h); off by default
 };
 
 // The kernel gradients grad W_ij of a step's fluid pairs, by fluid-list slot k of particle i:
@@ -49,9 +51,17 @@ struct FluidGradients {
 };
 
 // Per-material constants, copied once in prepare() into arrays a view can point at.
+// Surface tension: the model the liquids name (one per solver; the scene reader refuses two), the
+// per-material coefficient that model uses for each liquid's `surface_tension` sigma [N/m], and
+// Akinci's beta per (liquid, boundary material) pair from the liquids' `adhesion`.
 struct FluidMaterialTable {
   std::vector<Real> rest_density, viscosity, boundary_viscosity;
-  void load(const World& world);
+  SurfaceTensionModel surface_model = SurfaceTensionModel::None;
+  std::vector<Real> cohesion, adhesion;
+  bool has_adhesion = false;
+  Real max_sigma_over_density = 0;  // [m^3/s^2] the capillary time-step limit's largest sigma/rho0
+  // Reads the constants of every material; the surface model of `materials` (the solver's).
+  void load(const World& world, const std::vector<MaterialId>& materials);
 };
 
 // Neighbour-list handles for the lists every fluid solver needs.

@@ -75,7 +75,7 @@ void PcisphSolver::prepare(World& world) {
 }
 
 Real PcisphSolver::max_time_step(const World& world) const {
-  const Real dt = fluid_cfl_time_step(world, fluid_.max_viscosity, reference_speed_);
+  const Real dt = fluid_cfl_time_step(world, fluid_.force_limits(), reference_speed_);
   return rest_time_step_ > 0 ? std::min(dt, rest_time_step_) : dt;
 }
 

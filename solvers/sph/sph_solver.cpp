@@ -65,7 +65,7 @@ void SphSolver::prepare_method(World& world) {
 
 Real SphSolver::max_time_step(const World& world) const {
   return sound_speed_time_step(world, Real(world.settings().time.cfl), std::sqrt(stiffness_),
-                               max_viscosity_);
+                               {max_viscosity_, fluid().table.max_sigma_over_density});
 }
 
 SphKernelChoice SphSolver::kernel_choice(Real support_radius) const {

@@ -43,7 +43,7 @@ void WcsphSolver::prepare_method(World& world) {
 }
 
 Real WcsphSolver::max_time_step(const World& world) const {
-  return sound_speed_time_step(world, cfl_, sound_speed_, fluid().max_viscosity);
+  return sound_speed_time_step(world, cfl_, sound_speed_, fluid().force_limits());
 }
 
 Real WcsphSolver::artificial_viscosity_factor(Real support_radius) const {

@@ -210,6 +210,20 @@ TEST(DevicePipelineOmp, BodySlamWithEveryFluidSolverIsBitwiseTheCpuPath) {
   EXPECT_GT(guarded, 0u) << "the guard never acted: the test would not see it differ";
 }
 
+// Surface tension and adhesion (solvers/fluid/surface_forces.h): the normals' pass, the forces,
+// and the adhesion's reactions on the cube, with two fluid solvers.
+TEST(DevicePipelineOmp, SurfaceTensionAndAdhesionAreBitwiseTheCpuPath) {
+  for (const char* solver : {"pcisph", "dfsph"}) {
+    SCOPED_TRACE(solver);
+    auto doc = testing::cube_shot_into_water({{"name", solver}});
+    doc["particle_spacing"] = 0.04;
+    doc["bodies"][0]["velocity"] = {2.0, 0, 0};
+    doc["materials"]["water"]["surface_tension"] = 0.5;
+    doc["materials"]["water"]["adhesion"] = {{"solid", 2.0}, {"walls", 0.5}};
+    expect_parity(doc, 120);
+  }
+}
+
 // A frozen paddle turning in the dam break: a kinematic body's particles placed on the device.
 TEST(DevicePipelineOmp, KinematicPaddleIsBitwiseTheCpuPath) {
   auto doc = small_dam_break();

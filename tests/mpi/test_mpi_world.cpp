@@ -173,6 +173,18 @@ TEST(SplitWorld, EveryFluidSolverIsBitwiseTheOneRankRun) {
   }
 }
 
+// Surface tension reads its neighbours' normals, so ghosts must carry them (a field refreshed after
+// each particle stage); adhesion to the walls, the tension with two solvers.
+TEST(SplitWorld, SurfaceTensionIsBitwiseTheOneRankRun) {
+  for (const std::string solver : {"pcisph", "iisph"}) {
+    SCOPED_TRACE(solver);
+    auto doc = small_dam_break(solver);
+    doc["materials"]["water"]["surface_tension"] = 0.5;
+    doc["materials"]["water"]["adhesion"] = {{"walls", 1.0}};
+    expect_same_as_one_rank(doc, 60);
+  }
+}
+
 TEST(SplitWorld, RebalancingEveryStepOrNeverChangesNoBit) {
   expect_same_as_one_rank(small_dam_break(), 80, 1);
   expect_same_as_one_rank(small_dam_break(), 80, 0);

@@ -70,6 +70,32 @@ class EveryFluidSolver : public ::testing::TestWithParam<std::string> {
   TestWorld world_of(const nlohmann::json& doc) {
     return TestWorld(doc, 2, every_solver_registry());
   }
+  // Steps cube_shot_into_water's `doc` (see FluidAndBodyConserveMomentumOver1000Steps) and
+  // checks that fluid + body momentum drifts by less than 1e-3 of what they exchanged.
+  void expect_momentum_kept(const nlohmann::json& doc, const std::string& reference,
+                            const std::string& with) {
+    TestWorld t = world_of(doc);
+    const Eigen::Vector3d body0 = bodies_of(*t.world).momentum();
+    const Eigen::Vector3d total0 = body0 + momentum_of(t.world->particles(), ParticleType::Liquid);
+    double exchanged = 0, drift = 0;
+    int steps = 0;
+    for (; steps < 1000 && !liquid_near_walls(t.world->particles()); ++steps) {
+      t.world->step(0.0004);
+      const Eigen::Vector3d body = bodies_of(*t.world).momentum();
+      exchanged = std::max(exchanged, (body - body0).norm());
+      drift = std::max(
+          drift, (body + momentum_of(t.world->particles(), ParticleType::Liquid) - total0).norm());
+    }
+    std::printf(
+        "%s%s: %d steps, momentum exchanged %.6f kg m/s, largest drift of the total %.3e "
+        "(%.2e)\n",
+        GetParam().c_str(), with.c_str(), steps, exchanged, drift, drift / exchanged);
+    EXPECT_GE(steps, 250);
+    EXPECT_GT(exchanged, 0.1 * body0.norm());  // the cube did hit the water
+    record_validation("drift of fluid + body momentum / momentum exchanged" + with, reference, "0",
+                      "below 1e-3", drift / exchanged);
+    EXPECT_LT(drift, 1e-3 * exchanged);
+  }
 };
 
 // Archimedes, as Buoyancy.CubeOfHalfWaterDensity... but with the cube placed half in the water
@@ -104,27 +130,19 @@ TEST_P(EveryFluidSolver, HoldsUpAFloatingCube) {
 // walls after about 400 steps. The cube meets the water after about 110 steps, and the exchange
 // is over by step 250: at least 250 steps are required.
 TEST_P(EveryFluidSolver, FluidAndBodyConserveMomentumOver1000Steps) {
-  TestWorld t = world_of(cube_shot_into_water(solver_without_gravity(GetParam())));
-  const Eigen::Vector3d body0 = bodies_of(*t.world).momentum();
-  const Eigen::Vector3d total0 = body0 + momentum_of(t.world->particles(), ParticleType::Liquid);
-  double exchanged = 0, drift = 0;
-  int steps = 0;
-  for (; steps < 1000 && !liquid_near_walls(t.world->particles()); ++steps) {
-    t.world->step(0.0004);
-    const Eigen::Vector3d body = bodies_of(*t.world).momentum();
-    exchanged = std::max(exchanged, (body - body0).norm());
-    drift = std::max(
-        drift, (body + momentum_of(t.world->particles(), ParticleType::Liquid) - total0).norm());
-  }
-  std::printf(
-      "%s: %d steps, momentum exchanged %.6f kg m/s, largest drift of the total %.3e (%.2e)\n",
-      GetParam().c_str(), steps, exchanged, drift, drift / exchanged);
-  EXPECT_GE(steps, 250);
-  EXPECT_GT(exchanged, 0.1 * body0.norm());  // the cube did hit the water
-  record_validation("drift of fluid + body momentum / momentum exchanged",
-                    "Newton's third law (Akinci et al. 2012 reactions)", "0", "below 1e-3",
-                    drift / exchanged);
-  EXPECT_LT(drift, 1e-3 * exchanged);
+  expect_momentum_kept(cube_shot_into_water(solver_without_gravity(GetParam())),
+                       "Newton's third law (Akinci et al. 2012 reactions)", "");
+}
+
+// The same with surface tension and adhesion (Akinci et al. 2013): cohesion pairs inside the
+// water, adhesion between the water and the cube with its reaction on the cube (eq. 6, put on
+// the body as pressure reactions are), so water and cube together still keep their momentum.
+TEST_P(EveryFluidSolver, SurfaceTensionAndAdhesionConserveMomentumWithABody) {
+  auto doc = cube_shot_into_water(solver_without_gravity(GetParam()));
+  doc["materials"]["water"]["surface_tension"] = 0.5;  // N/m: gamma 0.13 at 2 cm
+  doc["materials"]["water"]["adhesion"] = {{"solid", 2.0}};
+  expect_momentum_kept(doc, "Newton's third law (Akinci et al. 2013 pair forces)",
+                       ", with cohesion and adhesion");
 }
 
 // As DemFluid.BeadAndWaterConserveMomentumWithoutGravity: the liquid gathers the opposite of the

@@ -1,0 +1,43 @@
+// Bad surface tension input (docs/surface-tension.md) is refused before anything runs: exit code
+// 2, the JSON path, and the allowed range or names.
+#include "tests/cli/cli_support.h"
+
+namespace {
+
+using namespace upf::cli_test;
+
+TEST_F(Cli, NegativeSurfaceTensionNamesItsRange) {
+  auto doc = sample();
+  doc["materials"]["water"]["surface_tension"] = -0.07;
+  expect_rejected(doc, {"/materials/water/surface_tension", "out of range", "[0, 10]"});
+}
+
+TEST_F(Cli, UnregisteredSurfaceTensionModelIsNamedWithTheRegisteredOnes) {
+  auto doc = sample();
+  doc["materials"]["water"]["surface_tension"] = 0.07;
+  doc["materials"]["water"]["surface_tension_model"] = "akinci2031";
+  expect_rejected(
+      doc, {"/materials/water/surface_tension_model", "no surface tension model named 'akinci2031'",
+            "did you mean 'akinci2013'"});
+}
+
+TEST_F(Cli, AdhesionMustNameABoundaryMaterialWithinRange) {
+  auto doc = sample();
+  doc["materials"]["water"]["surface_tension"] = 0.07;
+  doc["materials"]["water"]["adhesion"] = {{"wals", 1.0}};
+  expect_rejected(
+      doc, {"/materials/water/adhesion/wals", "no material named 'wals'", "did you mean 'walls'"});
+  doc["materials"]["water"]["adhesion"] = {{"water", 1.0}};
+  expect_rejected(doc, {"/materials/water/adhesion/water", "is a liquid material"});
+  doc["materials"]["water"]["adhesion"] = {{"walls", -1.0}};
+  expect_rejected(doc, {"/materials/water/adhesion/walls", "out of range"});
+}
+
+TEST_F(Cli, AdhesionWithoutSurfaceTensionSaysWhatToSet) {
+  auto doc = sample();
+  doc["materials"]["water"]["adhesion"] = {{"walls", 1.0}};
+  expect_rejected(doc, {"/materials/water/adhesion", "surface_tension is 0",
+                        "/materials/water/surface_tension"});
+}
+
+}  // namespace
