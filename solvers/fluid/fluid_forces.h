@@ -34,16 +34,23 @@ UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32
 // Density at the current positions and the kernel gradients there, in one pass: grad W_ij goes
 // into the store of `fluid_gradient` (if it has one) for each fluid-list slot k of i and
 // sum_b V_b grad W_ib into boundary_gradient. The gradients are reused by every force of the step.
+// With `normal` not null, also Akinci et al. 2013's surface normal n_i = H sum_j V_j grad W_ij
+// (surface_forces.h) with the neighbours' rest volumes V_j = m_j / rho0_j, in the same pass: the
+// current densities would need a pass of their own.
 UPF_HD inline Real density_and_gradients(const FluidView& f, FluidGradients fluid_gradient,
-                                         Vec3& boundary_gradient, std::uint32_t i) {
+                                         Vec3& boundary_gradient, std::uint32_t i,
+                                         Vec3* normal = nullptr) {
   const Vec3 xi = f.x[i];
   Real rho = f.mass[i] * f.kernel.value(Real(0));
+  Vec3 n{};
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
     Vec3 g;
     rho += f.mass[j] * f.kernel.value_and_gradient(xi - f.x[j], g);
     if (fluid_gradient.stored) fluid_gradient.stored[k] = g;
+    if (normal) n += g * (f.mass[j] / f.rest_density[f.material[j]]);
   }
+  if (normal) *normal = n * f.kernel.support_radius();
   const Real rho0 = f.rest_density[f.material[i]];
   Vec3 boundary{};
   Real boundary_density = 0;

@@ -11,26 +11,18 @@
 
 namespace upf {
 
-// Density and kernel gradients at the current positions (fluid_forces.h).
+// Density and kernel gradients at the current positions (fluid_forces.h), and with
+// `surface_normal` not null Akinci's surface normals, which the surface tension of i's neighbours
+// reads (surface_forces.h).
 struct DensityAndGradientsStage {
   FluidView f;
   FluidGradients fluid_gradient;  // per fluid-list slot
   Vec3* boundary_gradient;        // per particle
   Real* density;
+  Vec3* surface_normal = nullptr;  // per particle
   UPF_HD void operator()(std::uint32_t i) const {
-    density[i] = density_and_gradients(f, fluid_gradient, boundary_gradient[i], i);
-  }
-};
-
-// Akinci's surface normals n_i (surface_forces.h), which the
-// surface tension of i's neighbours reads: a pass of its own, after the densities.
-struct SurfaceNormalStage {
-  FluidView f;
-  const Real* density;
-  FluidGradients fluid_gradient;
-  Vec3* normal;
-  UPF_HD void operator()(std::uint32_t i) const {
-    normal[i] = akinci_normal(f, density, fluid_gradient, i);
+    density[i] = density_and_gradients(f, fluid_gradient, boundary_gradient[i], i,
+                                       surface_normal ? surface_normal + i : nullptr);
   }
 };
 
@@ -107,7 +99,7 @@ struct CompressionValue {
 };
 
 // The non-pressure part every fluid solver's step starts with, for any executor (the CPU's, or
-// the device pipeline's): density and kernel gradients at the current positions, the surface
+// the device pipeline's): density and kernel gradients at the current positions, with the surface
 // normals when f.surface is on (into `surface_normal`, the array f.surface.normal reads), then
 // a_other = g + viscosity + surface forces, plus F / m from other materials when `liquid_force`
 // is not null.
@@ -124,9 +116,8 @@ struct NonPressureArrays {
 template <class Executor>
 void run_non_pressure_stages(const Executor& exec, ParticleRange owned, const FluidView& f,
                              const NonPressureArrays& a, const Vec3& gravity) {
-  exec.run(owned, DensityAndGradientsStage{f, a.fluid_gradient, a.boundary_gradient, a.density});
-  if (f.surface.on())
-    exec.run(owned, SurfaceNormalStage{f, a.density, a.fluid_gradient, a.surface_normal});
+  exec.run(owned, DensityAndGradientsStage{f, a.fluid_gradient, a.boundary_gradient, a.density,
+                                           f.surface.on() ? a.surface_normal : nullptr});
   exec.run(owned, GravityAndViscosityStage{f, a.density, a.fluid_gradient, a.pressure, gravity,
                                            a.other_acceleration});
   if (a.liquid_force)

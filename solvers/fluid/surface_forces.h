@@ -1,7 +1,8 @@
 // Surface tension and adhesion shared by every fluid solver: Akinci, Akinci & Teschner 2013
 // ("Versatile surface tension and adhesion for SPH fluids", ACM TOG 32(6) 182), with the kernels
 // of akinci_kernels.h and H the support radius:
-//   normal (eq. 4)     n_i = H sum_j (m_j / rho_j) grad W_ij
+//   normal (eq. 4)     n_i = H sum_j (m_j / rho0_j) grad W_ij   (density_and_gradients, with the
+//                      rest volumes: the paper's m_j / rho_j would need a pass after the densities)
 //   tension (eq. 1-5)  F_ij = K_ij [ -gamma m_i m_j C(|x_ij|) x_ij / |x_ij|  - gamma m_i (n_i -
 //   n_j) ]
 //                      K_ij = 2 rho0 / (rho_i + rho_j)
@@ -19,17 +20,6 @@
 
 namespace upf {
 
-// n_i of eq. 4 over i's liquid neighbours, with the kernel gradients of the step.
-UPF_HD inline Vec3 akinci_normal(const FluidView& f, const Real* density,
-                                 FluidGradients fluid_gradient, std::uint32_t i) {
-  Vec3 n{};
-  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-    const std::uint32_t j = f.fluid.indices[k];
-    n += fluid_gradient.at(f, i, k) * (f.mass[j] / density[j]);
-  }
-  return n * f.kernel.support_radius();
-}
-
 // Cohesion and curvature on liquid particle i, as an acceleration.
 UPF_HD inline Vec3 akinci_tension_acceleration(const FluidView& f, const Real* density,
                                                std::uint32_t i) {
@@ -37,21 +27,27 @@ UPF_HD inline Vec3 akinci_tension_acceleration(const FluidView& f, const Real* d
   const Real h = f.kernel.support_radius();
   const AkinciCohesionKernel cohesion(h);
   const Vec3 xi = f.x[i];
-  const MaterialId mi = f.material[i];
-  const Real gamma_i = s.cohesion[mi];
-  const Real rho0_i = f.rest_density[mi];
+  const MaterialId mat_i = f.material[i];
+  const Real gamma_i = s.cohesion[mat_i];
+  const Real rho0_i = f.rest_density[mat_i];
+  const Real mi = f.mass[i];
+  const Real rho_i = density[i];
   Vec3 a{};
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    const MaterialId mj = f.material[j];
-    const Real gamma = Real(0.5) * (gamma_i + s.cohesion[mj]);
+    const MaterialId mat_j = f.material[j];
+    const Real gamma = Real(0.5) * (gamma_i + s.cohesion[mat_j]);
     if (gamma <= 0) continue;
     const Vec3 xij = xi - f.x[j];
     const Real r = norm(xij);
-    Vec3 pair = -(s.normal[i] - s.normal[j]) * (Real(2) * f.mass[j] / (f.mass[i] + f.mass[j]));
-    if (r > Real(1e-9) * h) pair -= xij * (f.mass[j] * cohesion.value(r) / r);
-    const Real k_ij = (rho0_i + f.rest_density[mj]) / (density[i] + density[j]);
-    a += pair * (k_ij * gamma);
+    if (r <= Real(1e-9) * h) continue;  // i itself (no pair force), or a coincident particle
+    // One division for K_ij gamma (rho0_i + rho0_j) / (rho_i + rho_j), the reduced-mass factor
+    // 2 m_j / (m_i + m_j) and the cohesion's 1 / r.
+    const Real mj = f.mass[j];
+    const Real scale = gamma * (rho0_i + f.rest_density[mat_j]) * mj /
+                       ((rho_i + density[j]) * (mi + mj) * r);
+    a -= (s.normal[i] - s.normal[j]) * (scale * Real(2) * r) +
+         xij * (scale * (mi + mj) * cohesion.value(r));
   }
   return a;
 }
