@@ -3,9 +3,8 @@
 // of akinci_kernels.h and H the support radius:
 //   normal (eq. 4)     n_i = H sum_j (m_j / rho0_j) grad W_ij   (density_and_gradients, with the
 //                      rest volumes: the paper's m_j / rho_j would need a pass after the densities)
-//   tension (eq. 1-5)  F_ij = K_ij [ -gamma m_i m_j C(|x_ij|) x_ij / |x_ij|  - gamma m_i (n_i -
-//   n_j) ]
-//                      K_ij = 2 rho0 / (rho_i + rho_j)
+//   tension (eq. 1-5)  F_ij = K_ij [ -gamma m_i m_j C(r) x_ij / r  - gamma m_i (n_i - n_j) ],
+//                      K_ij = 2 rho0 / (rho_i + rho_j),  r = |x_ij|
 //   adhesion (eq. 6)   F_ib = -beta m_i Psi_b A(|x_ib|) x_ib / |x_ib|,  Psi_b = rho0_i V_b
 // written as accelerations. Symmetric in every pair, so liquid and bodies together keep their
 // momentum (the reaction of adhesion on rigid particles is in boundary_reactions.h):
@@ -44,8 +43,8 @@ UPF_HD inline Vec3 akinci_tension_acceleration(const FluidView& f, const Real* d
     // One division for K_ij gamma (rho0_i + rho0_j) / (rho_i + rho_j), the reduced-mass factor
     // 2 m_j / (m_i + m_j) and the cohesion's 1 / r.
     const Real mj = f.mass[j];
-    const Real scale = gamma * (rho0_i + f.rest_density[mat_j]) * mj /
-                       ((rho_i + density[j]) * (mi + mj) * r);
+    const Real scale =
+        gamma * (rho0_i + f.rest_density[mat_j]) * mj / ((rho_i + density[j]) * (mi + mj) * r);
     a -= (s.normal[i] - s.normal[j]) * (scale * Real(2) * r) +
          xij * (scale * (mi + mj) * cohesion.value(r));
   }
