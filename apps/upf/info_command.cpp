@@ -36,6 +36,11 @@ int print_text(const Registry& registry) {
                 std::string(to_string(s.type)).c_str(), s.summary.c_str(), s.reference.c_str());
     print_params(s.params);
   }
+  std::printf("\nSurface tension models (scene key materials/NAME/surface_tension_model):\n");
+  for (const auto& m : registry.surface_tension_models())
+    std::printf("  %s%s\n    %s\n    reference: %s\n", m.name.c_str(),
+                &m == &registry.surface_tension_models().front() ? " (the default)" : "",
+                m.summary.c_str(), m.reference.c_str());
   std::printf("\nWorld settings (scene sections):\n");
   for (const auto& section : world_setting_sections()) {
     std::printf("  %s\n    %s\n", section.path.c_str(), section.summary.c_str());

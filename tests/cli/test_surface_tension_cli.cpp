@@ -40,4 +40,12 @@ TEST_F(Cli, AdhesionWithoutSurfaceTensionSaysWhatToSet) {
                         "/materials/water/surface_tension"});
 }
 
+TEST_F(Cli, InfoListsTheSurfaceTensionModels) {
+  const Result r = run_upf("info");
+  EXPECT_EQ(r.code, 0);
+  for (const char* s :
+       {"Surface tension models", "akinci2013 (the default)", "Akinci", "surface_tension", "N/m"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s;
+}
+
 }  // namespace
