@@ -138,6 +138,13 @@ struct SceneDescription {
            rejected_materials.end();
   }
 
+  // The declared material of that name, or null.
+  const Material* material(const std::string& material_name) const {
+    for (const auto& m : materials)
+      if (m.name == material_name) return &m;
+    return nullptr;
+  }
+
   // In double: a huge box at a tiny spacing must give a huge number, not an overflow.
   double estimated_particles() const;
 };

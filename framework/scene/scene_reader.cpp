@@ -153,16 +153,10 @@ void read_material(JsonInput& in, const json& node, const std::string& name,
   scene.materials.push_back(std::move(m));
 }
 
-const Material* find_material(const SceneDescription& scene, const std::string& name) {
-  for (const auto& m : scene.materials)
-    if (m.name == name) return &m;
-  return nullptr;
-}
-
 // A material reference must name a declared material of the expected type.
 bool check_material_ref(JsonInput& in, const SceneDescription& scene, const std::string& name,
                         const std::string& path, ParticleType expected) {
-  const Material* m = find_material(scene, name);
+  const Material* m = scene.material(name);
   if (!m && scene.rejected(name)) return false;  // its own problem is reported already
   if (!m) {
     std::vector<std::string> names;

@@ -52,8 +52,8 @@ void check_surface_tension_keys(JsonInput& in, const Registry& registry,
     const std::string path = "/materials/" + m.name;
     for (const auto& [name, ratio] : m.adhesion) {
       const std::string where = path + "/adhesion/" + name;
-      const Material* other = nullptr;
-      for (const Material& o : scene.materials) other = o.name == name ? &o : other;
+      const Material* other = scene.material(name);
+      if (!other && scene.rejected(name)) continue;  // its own problem is reported already
       if (!other) {
         std::vector<std::string> boundaries;
         for (const Material& o : scene.materials)

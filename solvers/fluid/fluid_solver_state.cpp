@@ -17,8 +17,7 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)
     reaction_list = world.request_neighbours(mask_of(ParticleType::Rigid), kLiquidMask);
   table.load(world, materials);
-  surface_tension = table.surface_model != SurfaceTensionModel::None;
-  if (surface_tension) surface_normal_field = p.declare_scratch_vector("fluid.surface_normal");
+  if (surface_tension()) surface_normal_field = p.declare_scratch_vector("fluid.surface_normal");
   owned.set_materials(world.materials().size(), materials);
   max_viscosity = 0;
   for (MaterialId m : materials) max_viscosity = std::max(max_viscosity, table.viscosity[m]);
@@ -33,7 +32,7 @@ FluidView FluidSolverState::begin_step(World& world) {
   pressure_acceleration = world.particles()[pressure_acceleration_field].data();
   FluidView f = make_fluid_view(world, table, lists);
   f.wall_pressure = wall_pressure;
-  surface_normal = surface_tension ? world.particles()[surface_normal_field].data() : nullptr;
+  surface_normal = surface_tension() ? world.particles()[surface_normal_field].data() : nullptr;
   f.surface.normal = surface_normal;
   return f;
 }

@@ -52,8 +52,8 @@ struct FluidSolverState {
   // Per particle, with surface tension on: Akinci's normals (surface_forces.h). A field, because
   // neighbours read it and ghosts on other ranks must carry it.
   FieldHandle<Vec3> surface_normal_field;
-  bool surface_tension = false;
   Vec3* surface_normal = nullptr;  // begin_step points it at the field's values
+  bool surface_tension() const { return table.surface_model != SurfaceTensionModel::None; }
 
   // Creates the exported fields `density` and `pressure`, requests the neighbour lists and loads
   // the constants of `materials`.

@@ -35,10 +35,9 @@ void FluidMaterialTable::load(const World& world, const std::vector<MaterialId>&
   for (std::size_t m = 0; m < n; ++m) {
     if (mats[m].type != ParticleType::Liquid) continue;
     const double sigma = mats[m].param("surface_tension");
-    cohesion[m] =
-        Real(surface_tension_coefficient(surface_model, sigma, rest_density[m], spacing, support));
-    // Adhesion is a ratio to Akinci's gamma whatever the model (docs/surface-tension.md).
+    // Akinci's gamma, the model's coefficient; adhesion is a ratio to it (docs/surface-tension.md).
     const double gamma = akinci_gamma_for_sigma(sigma, rest_density[m], spacing, support);
+    cohesion[m] = Real(gamma);
     max_sigma_over_density = std::max(max_sigma_over_density, Real(sigma) / rest_density[m]);
     for (const auto& [name, ratio] : mats[m].adhesion) {
       const auto boundary = world.materials().find(name);

@@ -68,15 +68,4 @@ double akinci_gamma_for_sigma(double sigma, double rest_density, double spacing,
   return sigma / akinci_sigma_per_gamma(rest_density, spacing, support);
 }
 
-double surface_tension_coefficient(SurfaceTensionModel model, double sigma, double rest_density,
-                                   double spacing, double support_radius) {
-  switch (model) {
-    case SurfaceTensionModel::Akinci2013:
-      return akinci_gamma_for_sigma(sigma, rest_density, spacing, support_radius);
-    case SurfaceTensionModel::None:
-      break;
-  }
-  return 0;
-}
-
 }  // namespace upf

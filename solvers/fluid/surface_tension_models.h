@@ -1,6 +1,5 @@
 // The surface tension models of the shared fluid pieces (surface_forces.h), registered by name for
-// the scenes' "surface_tension_model", and how a liquid's sigma [N/m] becomes a model's
-// coefficient.
+// the scenes' "surface_tension_model", and how a liquid's sigma [N/m] becomes Akinci's gamma.
 #pragma once
 
 #include <string>
@@ -16,15 +15,11 @@ void register_surface_tension_models(Registry& registry);
 // an unknown one.
 SurfaceTensionModel surface_tension_model_named(const std::string& name);
 
-// The coefficient of `model` that gives a liquid of rest density rho0 the surface tension sigma
-// [N/m] at particle spacing s and support radius H, from a flat face of the initial lattice
-// (s^3 per particle): Akinci's gamma such that the work per area to split the lattice, summed
-// pair by pair, is 2 sigma (0.76 of the continuum value of Kirkwood & Buff, akinci_kernels.h,
-// at H = 2 s).
-double surface_tension_coefficient(SurfaceTensionModel model, double sigma, double rest_density,
-                                   double spacing, double support_radius);
-
-// Akinci's gamma for sigma: also the scale of every model's adhesion, beta = ratio * gamma.
+// Akinci's gamma that gives a liquid of rest density rho0 the surface tension sigma [N/m] at
+// particle spacing s and support radius H: the work per area to split the initial lattice
+// (s^3 per particle) along a plane, summed pair by pair, is 2 sigma (0.76 of the continuum value
+// of Kirkwood & Buff, akinci_kernels.h, at H = 2 s). Also the scale of the adhesion,
+// beta = ratio * gamma.
 double akinci_gamma_for_sigma(double sigma, double rest_density, double spacing,
                               double support_radius);
 
