@@ -45,14 +45,18 @@ void check_covered(const World& world, const std::string& where) {
   setup.rest_density = fluid.table.rest_density;
   setup.viscosity = fluid.table.viscosity;
   setup.boundary_viscosity = fluid.table.boundary_viscosity;
+  setup.viscosity_factor = Real(fluid.table.viscosity_operator.laplacian_factor);
   setup.surface_model = fluid.table.surface_model;
   setup.cohesion = fluid.table.cohesion;
   setup.adhesion = fluid.table.adhesion;
   setup.has_adhesion = fluid.table.has_adhesion;
+  setup.implicit_viscosity = fluid.implicit_viscosity();
+  setup.viscosity_solve = {fluid.table.viscosity_tolerance, fluid.table.viscosity_max_iterations};
   setup.owns.resize(world.materials().size());
   for (std::size_t m = 0; m < setup.owns.size(); ++m)
     setup.owns[m] = fluid.owned.owns(MaterialId(m)) ? 1 : 0;
   setup.reactions = fluid.reaction_list >= 0;
+  setup.wall_friction = fluid.wall_list >= 0;
   setup.wall_pressure = fluid.wall_pressure;
   setup.stages = solver.stages();
   return setup;

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "device/solver_part.h"
+#include "framework/core/errors.h"
 #include "solvers/fluid/fluid_stages.h"
 
 namespace upf::device {
@@ -49,6 +50,7 @@ class FluidPart final : public SolverPart<Backend> {
     copy_to_device(owns_, setup_.owns);
     fluid_list_ = state.lists.request(kLiquidMask, kLiquidMask);
     boundary_list_ = state.lists.request(kLiquidMask, kBoundaryMask);
+    if (setup_.wall_friction) wall_list_ = state.lists.request(kBoundaryMask, kLiquidMask);
     if (setup_.reactions)
       reaction_list_ = state.lists.request(mask_of(ParticleType::Rigid), kLiquidMask);
   }
@@ -95,16 +97,32 @@ class FluidPart final : public SolverPart<Backend> {
       pressure_acceleration_.resize(n);
       surface_normal_.resize(setup_.surface_model != SurfaceTensionModel::None ? n : 0);
       step.f = fluid_view(state);
+      ImplicitViscosityStep viscous;
+      ImplicitViscosityArrays viscosity_arrays{};
+      if (setup_.implicit_viscosity) {
+        viscosity_arrays = implicit_viscosity_arrays(
+            [&](const char* name) { return raw<Vec3>(state.particles.vector_array(name)); });
+        step.f.solved_velocity = viscosity_arrays.solution;
+        viscous = {&viscosity_arrays, setup_.viscosity_solve, step.owns, n, dt};
+      }
       step.fluid_gradient =
           setup_.store_gradients ? FluidGradients(raw<Vec3>(fluid_gradient_)) : FluidGradients();
       step.boundary_gradient = raw<Vec3>(boundary_gradient_);
       step.other_acceleration = raw<Vec3>(other_acceleration_);
       step.pressure_acceleration = raw<Vec3>(pressure_acceleration_);
-      run_non_pressure_stages(
+      Vec3* wall_velocity = nullptr;
+      if (wall_list_ >= 0) {
+        wall_velocity = raw<Vec3>(state.particles.vector_array(kWallVelocityField));
+        step.f.wall_velocity = wall_velocity;
+      }
+      const ImplicitViscosityStats viscosity_stats = run_non_pressure_stages(
           exec, step.owned, step.f,
           {step.fluid_gradient, step.boundary_gradient, step.other_acceleration, step.density,
-           liquid_force, step.pressure, step.f.surface.on() ? raw<Vec3>(surface_normal_) : nullptr},
-          state.world.gravity);
+           liquid_force, step.pressure, step.f.surface.on() ? raw<Vec3>(surface_normal_) : nullptr,
+           wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{}, wall_velocity, n},
+          state.world.gravity, viscous);
+      if (!viscosity_stats.converged)
+        throw ConvergenceError(implicit_viscosity_failure(viscosity_stats, setup_.viscosity_solve));
       method_.non_pressure(exec, step);
     });
 
@@ -142,6 +160,7 @@ class FluidPart final : public SolverPart<Backend> {
     f.rest_density = raw<Real>(rest_density_);
     f.viscosity = raw<Real>(viscosity_);
     f.boundary_viscosity = raw<Real>(boundary_viscosity_);
+    f.viscosity_factor = setup_.viscosity_factor;
     f.fluid = state.lists.view(fluid_list_);
     f.boundary = state.lists.view(boundary_list_);
     f.kernel = CubicSplineKernel(state.world.support_radius);
@@ -159,7 +178,7 @@ class FluidPart final : public SolverPart<Backend> {
   Method method_;
   StageRunner stages_;
   SolverStats stats_;
-  int fluid_list_ = -1, boundary_list_ = -1, reaction_list_ = -1;
+  int fluid_list_ = -1, boundary_list_ = -1, reaction_list_ = -1, wall_list_ = -1;
   vector<Real> rest_density_, viscosity_, boundary_viscosity_, cohesion_, adhesion_;
   vector<std::uint8_t> owns_;
   vector<std::uint32_t> owned_;

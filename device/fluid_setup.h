@@ -9,6 +9,7 @@
 
 #include "framework/core/vec3.h"
 #include "solvers/dfsph/dfsph_steps.h"
+#include "solvers/fluid/implicit_viscosity.h"
 #include "solvers/fluid/surface_force_view.h"
 #include "solvers/iisph/iisph_solve.h"
 #include "solvers/pcisph/pcisph_correction_loop.h"
@@ -20,12 +21,18 @@ namespace upf::device {
 struct FluidSetup {
   // Per material: FluidMaterialTable's constants and whether the solver moves it.
   std::vector<Real> rest_density, viscosity, boundary_viscosity;
+  Real viscosity_factor = 10;  // the Laplacian's F (viscosity_operator.h)
   std::vector<std::uint8_t> owns;
   // FluidMaterialTable's surface tension: the model, per material its coefficient, per pair
   // Akinci's beta (SurfaceForceView).
   SurfaceTensionModel surface_model = SurfaceTensionModel::None;
   std::vector<Real> cohesion, adhesion;
   bool has_adhesion = false;
+  // FluidMaterialTable's implicit viscosity: on or off, its tolerance and cap (its fields are
+  // found by name, implicit_viscosity.h).
+  bool implicit_viscosity = false;
+  ImplicitViscositySettings viscosity_solve{};
+  bool wall_friction = false;  // FluidSolverState::wall_list: walls' velocities extrapolated
   bool reactions = false;  // rigid particles whose reactions a body system sums
   // Keep grad W_ij per fluid pair (12 B a pair, as the CPU path does) instead of recomputing it
   // where used: the same bits either way (FluidGradients).

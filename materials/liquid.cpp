@@ -12,7 +12,18 @@ MaterialKind liquid_material_kind() {
           {"viscosity", "m^2/s", 1e-3, 0, 10,
            "kinematic viscosity nu of the shared Laplacian viscosity (Monaghan 2005); also "
            "damps the flow, so it is larger than water's 1e-6 at coarse resolution; it limits "
-           "the time step: dt <= 0.125 H^2 / nu"},
+           "the time step: dt <= 0.07 s^2 / nu unless implicit_viscosity is 1"},
+          {"implicit_viscosity", "1", 0, 0, 1,
+           "1: the viscosity (and boundary_viscosity) is solved implicitly (Weiler et al. "
+           "2018; docs/viscosity.md), so it no longer limits the time step: honey, lava, mud; "
+           "0: explicit",
+           true},
+          {"viscosity_tolerance", "1", 1e-3, 1e-8, 0.5,
+           "implicit viscosity: the conjugate gradient stops at this relative residual"},
+          {"viscosity_max_iterations", "1", 100, 1, 10000,
+           "implicit viscosity: iterations at most; a solve that needs more stops the run "
+           "(exit 3, the last good frame written)",
+           true},
           {"boundary_viscosity", "m^2/s", 0, 0, 10,
            "kinematic viscosity against boundary particles (wall friction); 0 disables it"},
           {"surface_tension", "N/m", 0, 0, 10,

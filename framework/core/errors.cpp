@@ -37,4 +37,19 @@ InstabilityError::InstabilityError(std::uint64_t step_, double time_, std::uint3
       value(value_),
       limit(limit_) {}
 
+InstabilityError::InstabilityError(std::uint64_t step_, double time_, const std::string& what)
+    : std::runtime_error("unstable at step " + std::to_string(step_) + " (t = " +
+                         [&] {
+                           std::ostringstream out;
+                           out << time_;
+                           return out.str();
+                         }() +
+                         " s): " + what),
+      step(step_),
+      time(time_),
+      particle_id(0),
+      quantity(what),
+      value(0),
+      limit(0) {}
+
 }  // namespace upf

@@ -33,12 +33,21 @@ class InstabilityError : public std::runtime_error {
  public:
   InstabilityError(std::uint64_t step, double time, std::uint32_t particle_id, std::string quantity,
                    double value, double limit);
+  // A failure no one particle stands for (a solve that did not converge): `what` says which.
+  InstabilityError(std::uint64_t step, double time, const std::string& what);
   std::uint64_t step;
   double time;
   std::uint32_t particle_id;
   std::string quantity;
   double value;
   double limit;
+};
+
+// An iterative solve (implicit viscosity) that did not reach its tolerance within its iteration
+// cap. World::step reports it as an InstabilityError with the step and time: exit code 3.
+class ConvergenceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // Writing output failed (disk full, unwritable directory). Exit code 1.

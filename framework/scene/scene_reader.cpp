@@ -11,6 +11,7 @@
 #include "framework/core/file_name.h"
 #include "framework/scene/json_input.h"
 #include "framework/scene/surface_tension_keys.h"
+#include "framework/scene/viscosity_keys.h"
 #include "framework/scene/world_setting_specs.h"
 
 namespace upf {
@@ -96,6 +97,10 @@ void read_material(JsonInput& in, const json& node, const std::string& name,
     // Densities and the like must be positive: the spec's range says so.
     auto v =
         in.required_number(node, path, spec.name, spec.min_value, spec.max_value, false, spec.unit);
+    if (v && spec.integer && *v != double(std::int64_t(*v))) {
+      in.problem(JsonInput::child(path, spec.name), "must be a whole number");
+      continue;
+    }
     if (v) m.params.set(spec.name, *v);
   }
   if (kind->type == ParticleType::Liquid) {
@@ -316,6 +321,7 @@ void read_materials(JsonInput& in, const json& doc, const Registry& registry,
                        mb.name + "'; materials sharing a solver must share its parameters");
     }
   check_surface_tension_keys(in, registry, scene);
+  check_viscosity_keys(in, scene);
 }
 
 // /containers: boxes of frozen wall particles.

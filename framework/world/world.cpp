@@ -210,7 +210,12 @@ void World::step(double dt) {
     Solver& s = *solvers_[k];
     StageRunner& stages = stage_runners_[k];
     stages.clear();
-    s.step(*this, Real(dt), stages);
+    try {
+      s.step(*this, Real(dt), stages);
+    } catch (const ConvergenceError& e) {
+      // Every rank is here: a solve's control flow follows global sums only.
+      throw InstabilityError(step_count_, time_, e.what());
+    }
     for (std::size_t j = 0; j < stages.names().size(); ++j)
       report_.stage_ms.emplace_back(stages.names()[j], stages.ms()[j]);
     const SolverStats st = s.stats();
@@ -300,7 +305,13 @@ void World::step_on_device(double dt) {
   report_ = StepReport{};
   report_.dt = dt;
   report_.sources = sources_done_;
-  device_->step(step_count_, dt, report_);
+  try {
+    device_->step(step_count_, dt, report_);
+  } catch (const ConvergenceError& e) {
+    sync_host();
+    device_->download_last_good(last_good_);
+    throw InstabilityError(step_count_, time_, e.what());
+  }
   host_stale_ = true;  // also when a body system's host edit synced it earlier in this step
   Stopwatch body_watch;
   for (auto& b : bodies_) b->advance(*this, dt);

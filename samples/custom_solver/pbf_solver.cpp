@@ -106,7 +106,7 @@ void PbfSolver::predict(World& world, const FluidView& f, Real dt) {
 
   // The density at x is what frames show as "density" (as for the other fluid solvers); the
   // shared forces: gravity, viscosity and the force of other materials (grains).
-  fluid_.shared_forces(world, f, density);
+  fluid_.shared_forces(world, f, density, dt);
   // Particles this solver does not move at their velocity, the owned ones under the forces.
   fluid_.predict_unowned(world, f, xs, dt);
   world.executor().run(

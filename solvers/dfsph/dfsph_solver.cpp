@@ -117,7 +117,7 @@ void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
   run("non_pressure", [&] {
     f = fluid_.begin_step(world);
     density = p[fluid_.density_field].data();
-    fluid_.shared_forces(world, f, density);
+    fluid_.shared_forces(world, f, density, dt);
     a = arrays(world, f, density);
     run_dfsph_non_pressure(exec, a);
   });

@@ -8,7 +8,7 @@
 // the shared boundary viscosity of fluid_forces.h and Akinci et al. 2013's adhesion
 // (surface_forces.h). So the reaction on b is
 //   F_b = sum_i m_i [ rho0_i P_i V_b grad W_ib
-//                     - 10 nu_b,i rho0_i V_b / rho_i (v_ib . x_ib) / (|x_ib|^2 + 0.01 H^2) grad
+//                     - F nu_b,i rho0_i V_b / rho_i (v_ib . x_ib) / (|x_ib|^2 + 0.01 H^2) grad
 //                     W_ib
 //                     + beta rho0_i V_b A(|x_ib|) x_ib / |x_ib| ]
 // gathered over b's fluid neighbours: no scatter, no atomics, the same bits for any thread
@@ -21,6 +21,7 @@
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/owned_particles.h"
 #include "solvers/fluid/surface_forces.h"
+#include "solvers/fluid/wall_velocity.h"
 
 namespace upf {
 
@@ -44,7 +45,7 @@ struct BoundaryReactionStage {
     if (begin == end) return;
     const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
     const Vec3 xb = f.x[b];
-    const Vec3 vb = f.v[b];
+    const Vec3 vb = viscous_wall_velocity(f, b);
     const Real vol = f.boundary_volume[b];
     Vec3 sum{};
     for (std::uint32_t k = begin; k < end; ++k) {
@@ -56,8 +57,10 @@ struct BoundaryReactionStage {
       Vec3 pair = pressure_gradient(xib) * (rho0 * pressure_factor(i) * vol);
       const Real nub = f.boundary_viscosity[m];
       if (nub > 0) {
-        const Real vx = dot(f.v[i] - vb, xib);
-        pair -= f.kernel.gradient(xib) * (Real(10) * nub * rho0 * vol / density[i] * vx /
+        // With implicit viscosity, at the velocities its solve found (implicit_viscosity.h).
+        const Vec3 vi = f.solved_velocity ? f.solved_velocity[i] : f.v[i];
+        const Real vx = dot(vi - vb, xib);
+        pair -= f.kernel.gradient(xib) * (f.viscosity_factor * nub * rho0 * vol / density[i] * vx /
                                           (squared_norm(xib) + Real(0.01) * h2));
       }
       sum += pair * f.mass[i];

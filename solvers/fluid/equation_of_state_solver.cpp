@@ -32,7 +32,7 @@ void EquationOfStateSolver::step(World& world, Real dt, StageRunner& run) {
     f = fluid_.begin_step(world);
     density = p[fluid_.density_field].data();
     pressure = p[fluid_.pressure_field].data();
-    fluid_.shared_forces(world, f, density);
+    fluid_.shared_forces(world, f, density, dt);
     add_own_non_pressure(world, f, density);
   });
 

@@ -5,11 +5,13 @@
 //   rho_i = sum_j m_j W_ij + sum_b Psi_b W_ib,  Psi_b = rho0_i V_b.
 // Viscosity: the Laplacian approximation of Monaghan 2005 ("Smoothed particle hydrodynamics",
 //   Rep. Prog. Phys. 68, eq. 6.1 form used with a kinematic viscosity nu):
-//   a_i = 2 (d + 2) nu sum_j (m_j / rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 H^2) grad W_ij,
-//   and the same against boundary particles (at rest) with Psi_b / rho_i and nu_boundary.
+//   a_i = F nu sum_j (m_j / rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 H^2) grad W_ij,
+//   and the same against boundary particles with Psi_b / rho_i and nu_boundary; F is the
+//   paper's 2 (d + 2) calibrated on the particle lattice (viscosity_operator.h).
 #pragma once
 
 #include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/wall_velocity.h"
 
 namespace upf {
 
@@ -65,9 +67,11 @@ UPF_HD inline Real density_and_gradients(const FluidView& f, FluidGradients flui
   return rho + rho0 * boundary_density;
 }
 
-// `fluid_gradient` as density_and_gradients left it this step.
+// `fluid_gradient` as density_and_gradients left it this step. Zero with implicit viscosity
+// (f.solved_velocity), whose solve adds its own (implicit_viscosity.h).
 UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* density,
                                           FluidGradients fluid_gradient, std::uint32_t i) {
+  if (f.solved_velocity) return Vec3{};
   const Real h2 = f.kernel.support_radius() * f.kernel.support_radius();
   const Vec3 xi = f.x[i];
   const Vec3 vi = f.v[i];
@@ -81,7 +85,7 @@ UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* densit
       a += fluid_gradient.at(f, i, k) *
            (f.mass[j] / density[j] * vx / (squared_norm(xij) + Real(0.01) * h2));
     }
-    a *= Real(10) * nu;
+    a *= f.viscosity_factor * nu;
   }
   const Real nub = f.boundary_viscosity[f.material[i]];
   if (nub > 0) {
@@ -90,11 +94,11 @@ UPF_HD inline Vec3 viscosity_acceleration(const FluidView& f, const Real* densit
     for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
       const std::uint32_t b = f.boundary.indices[k];
       const Vec3 xib = xi - f.x[b];
-      const Real vx = dot(vi - f.v[b], xib);
+      const Real vx = dot(vi - viscous_wall_velocity(f, b), xib);
       ab += f.kernel.gradient(xib) *
             (rho0 * f.boundary_volume[b] / density[i] * vx / (squared_norm(xib) + Real(0.01) * h2));
     }
-    a += ab * (Real(10) * nub);
+    a += ab * (f.viscosity_factor * nub);
   }
   return a;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "framework/core/errors.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_forces.h"
 
@@ -19,8 +20,21 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   table.load(world, materials);
   if (surface_tension()) surface_normal_field = p.declare_scratch_vector("fluid.surface_normal");
   owned.set_materials(world.materials().size(), materials);
+  bool wall_friction = false;
+  for (MaterialId m : materials) wall_friction = wall_friction || table.boundary_viscosity[m] > 0;
+  if (wall_friction) {
+    wall_list = world.request_neighbours(kBoundaryMask, kLiquidMask);
+    wall_velocity_field = p.declare_scratch_vector(kWallVelocityField);
+  }
   max_viscosity = 0;
-  for (MaterialId m : materials) max_viscosity = std::max(max_viscosity, table.viscosity[m]);
+  if (!implicit_viscosity())
+    for (MaterialId m : materials) max_viscosity = std::max(max_viscosity, table.viscosity[m]);
+  if (implicit_viscosity()) {
+    // Names from implicit_viscosity.h; the last, the warm start, lives across steps.
+    for (int k = 0; k + 1 < kImplicitViscosityFieldCount; ++k)
+      p.declare_scratch_vector(kImplicitViscosityFields[k]);
+    p.declare_vector(kImplicitViscosityFields[kImplicitViscosityFieldCount - 1]);
+  }
 }
 
 FluidView FluidSolverState::begin_step(World& world) {
@@ -34,6 +48,14 @@ FluidView FluidSolverState::begin_step(World& world) {
   f.wall_pressure = wall_pressure;
   surface_normal = surface_tension() ? world.particles()[surface_normal_field].data() : nullptr;
   f.surface.normal = surface_normal;
+  wall_velocity = wall_list >= 0 ? world.particles()[wall_velocity_field].data() : nullptr;
+  f.wall_velocity = wall_velocity;
+  if (implicit_viscosity()) {
+    Particles& p = world.particles();
+    viscosity_arrays =
+        implicit_viscosity_arrays([&](const char* name) { return p.vector_field(name).data(); });
+    f.solved_velocity = viscosity_arrays.solution;
+  }
   return f;
 }
 
@@ -45,16 +67,28 @@ void FluidSolverState::initial_density(World& world) {
                                                 boundary_gradient.data(), density});
 }
 
-void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density) {
+void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density,
+                                     Real dt) {
   const Vec3* liquid_force = world.coupling().active(CouplingArray::LiquidForce)
                                  ? world.coupling()[CouplingArray::LiquidForce].data()
                                  : nullptr;
   const Real* pressure = world.particles()[pressure_field].data();
-  run_non_pressure_stages(
+  ImplicitViscosityStep viscous;
+  if (implicit_viscosity())
+    viscous = {&viscosity_arrays,
+               {table.viscosity_tolerance, table.viscosity_max_iterations},
+               owned.materials(),
+               world.particles().size(),
+               dt};
+  viscosity_stats = run_non_pressure_stages(
       world.executor(), owned.range(), f,
       {fluid_gradient.data(), boundary_gradient.data(), other_acceleration.data(), density,
-       liquid_force, pressure, surface_normal},
-      world.settings().gravity);
+       liquid_force, pressure, surface_normal,
+       wall_list >= 0 ? view_of(world.neighbours(wall_list)) : NeighbourView{}, wall_velocity,
+       world.particles().size()},
+      world.settings().gravity, viscous);
+  if (!viscosity_stats.converged)
+    throw ConvergenceError(implicit_viscosity_failure(viscosity_stats, viscous.settings));
 }
 
 void FluidSolverState::predict_unowned(const World& world, const FluidView& f, Vec3* x_star,

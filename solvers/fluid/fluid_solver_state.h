@@ -35,10 +35,19 @@ struct FluidSolverState {
   bool wall_pressure = false;
   FluidNeighbourHandles lists;
   int reaction_list = -1;  // rigid -> liquid, when a body system collects reactions
+  // With wall friction (a boundary_viscosity > 0): boundary -> liquid, for the walls' velocities
+  // in the viscous sums (wall_velocity.h), and their field.
+  int wall_list = -1;
+  FieldHandle<Vec3> wall_velocity_field;
+  Vec3* wall_velocity = nullptr;  // begin_step points it at the field's values
   OwnedParticles owned;
-  Real max_viscosity = 0;  // [m^2/s] largest kinematic viscosity of the owned materials
+  // [m^2/s] largest kinematic viscosity of the owned materials, for the viscous time-step limit:
+  // 0 with implicit viscosity, which has none.
+  Real max_viscosity = 0;
   // The time-step limits of the owned materials' viscosity and surface tension.
-  FluidForceLimits force_limits() const { return {max_viscosity, table.max_sigma_over_density}; }
+  FluidForceLimits force_limits() const {
+    return {max_viscosity, table.max_sigma_over_density, Real(table.viscosity_operator.stiffness)};
+  }
   FieldHandle<Real> density_field, pressure_field;  // the exported fields every fluid solver writes
 
   // Per-step buffers, rewritten every step (so they need no reordering with the particles).
@@ -54,6 +63,12 @@ struct FluidSolverState {
   FieldHandle<Vec3> surface_normal_field;
   Vec3* surface_normal = nullptr;  // begin_step points it at the field's values
   bool surface_tension() const { return table.surface_model != SurfaceTensionModel::None; }
+  // With implicit viscosity (implicit_viscosity.h): its per-particle fields, the last step's
+  // viscous acceleration (the warm start, kept across steps and in checkpoints) and the last
+  // solve's statistics.
+  ImplicitViscosityArrays viscosity_arrays{};  // begin_step points them at the fields
+  ImplicitViscosityStats viscosity_stats;
+  bool implicit_viscosity() const { return table.implicit_viscosity; }
 
   // Creates the exported fields `density` and `pressure`, requests the neighbour lists and loads
   // the constants of `materials`.
@@ -65,7 +80,9 @@ struct FluidSolverState {
   void initial_density(World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
   // With f.wall_pressure, also the hydrostatic part of the wall pressure (boundary_pressure.h).
-  void shared_forces(const World& world, const FluidView& f, Real* density);
+  // With implicit viscosity, solves it for a step of dt; throws ConvergenceError when the solve
+  // does not reach its tolerance within its cap.
+  void shared_forces(const World& world, const FluidView& f, Real* density, Real dt);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array
   // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor` is P_i of
   // boundary_reactions.h (a value struct, fluid_stages.h); `pressure_gradient` the gradient of the

@@ -6,8 +6,10 @@
 #include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/implicit_viscosity.h"
 #include "solvers/fluid/owned_particles.h"
 #include "solvers/fluid/surface_forces.h"
+#include "solvers/fluid/wall_velocity.h"
 
 namespace upf {
 
@@ -102,7 +104,9 @@ struct CompressionValue {
 // the device pipeline's): density and kernel gradients at the current positions, with the surface
 // normals when f.surface is on (into `surface_normal`, the array f.surface.normal reads), then
 // a_other = g + viscosity + surface forces, plus F / m from other materials when `liquid_force`
-// is not null.
+// is not null; with `viscous.arrays` (implicit viscosity) the viscosity comes last, solved at the
+// end-of-step velocities these accelerations give (implicit_viscosity.h): its statistics are
+// returned, and the caller reports a solve that did not converge.
 struct NonPressureArrays {
   FluidGradients fluid_gradient;
   Vec3* boundary_gradient;
@@ -111,17 +115,30 @@ struct NonPressureArrays {
   const Vec3* liquid_force;  // CouplingArray::LiquidForce, or null
   const Real* pressure;      // at the step's start: the wall pressure's hydrostatic part
   Vec3* surface_normal;      // with f.surface on: per particle, f.surface.normal's array
+  // With wall friction: boundary -> liquid lists, and the array f.wall_velocity reads (written
+  // here, over all `all` particles, first: wall_velocity.h).
+  NeighbourView liquid_of_boundary{};
+  Vec3* wall_velocity = nullptr;
+  std::size_t all = 0;
 };
 
 template <class Executor>
-void run_non_pressure_stages(const Executor& exec, ParticleRange owned, const FluidView& f,
-                             const NonPressureArrays& a, const Vec3& gravity) {
+ImplicitViscosityStats run_non_pressure_stages(const Executor& exec, ParticleRange owned,
+                                               const FluidView& f, const NonPressureArrays& a,
+                                               const Vec3& gravity,
+                                               const ImplicitViscosityStep& viscous = {}) {
+  if (a.wall_velocity)
+    exec.run(all_particles(a.all), WallVelocityStage{f, a.liquid_of_boundary, a.wall_velocity});
   exec.run(owned, DensityAndGradientsStage{f, a.fluid_gradient, a.boundary_gradient, a.density,
                                            f.surface.on() ? a.surface_normal : nullptr});
   exec.run(owned, GravityAndViscosityStage{f, a.density, a.fluid_gradient, a.pressure, gravity,
                                            a.other_acceleration});
   if (a.liquid_force)
     exec.run(owned, AddForceOverMassStage{a.liquid_force, f.mass, a.other_acceleration});
+  if (!viscous.arrays) return {};
+  return solve_implicit_viscosity(exec, owned, viscous.all, f, viscous.owns, a.density,
+                                  a.fluid_gradient, a.other_acceleration, *viscous.arrays,
+                                  viscous.settings, viscous.dt);
 }
 
 }  // namespace upf

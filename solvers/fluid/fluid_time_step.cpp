@@ -25,14 +25,12 @@ Real free_fall_speed(const World& world) {
 }
 
 namespace {
-// 0.125 H^2 / nu (Morris et al. 1997) and 0.25 sqrt(s^3 / (2 pi sigma / rho0)) (Brackbill et al.
-// 1992; Adami et al. 2010), or no limit without viscosity and surface tension.
+// 1 / (nu stiffness) (viscosity_operator.h) and 0.25 sqrt(s^3 / (2 pi sigma / rho0)) (Brackbill et
+// al. 1992; Adami et al. 2010), or no limit without viscosity and surface tension.
 Real force_time_step(const WorldSettings& s, const FluidForceLimits& limits) {
   Real dt = std::numeric_limits<Real>::max();
-  if (limits.max_viscosity > 0) {
-    const Real h = s.support_radius();
-    dt = Real(0.125) * h * h / limits.max_viscosity;
-  }
+  if (limits.max_viscosity > 0 && limits.viscosity_stiffness > 0)
+    dt = Real(1) / (limits.max_viscosity * limits.viscosity_stiffness);
   if (limits.max_sigma_over_density > 0) {
     constexpr Real kTwoPi = Real(6.28318530717958647692);
     const Real spacing_cubed = s.spacing * s.spacing * s.spacing;

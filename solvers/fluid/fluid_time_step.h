@@ -1,7 +1,8 @@
 // The time-step limits every fluid solver shares: the CFL condition
 //   dt <= cfl * spacing / max(|v|max, v_ref)
 // (Courant, Friedrichs & Lewy 1928, in the particle form of Monaghan 1992), the viscous limit
-// dt <= 0.125 H^2 / nu (Morris et al. 1997) and, with surface tension, the capillary limit
+// dt <= 1 / (nu stiffness) of viscosity_operator.h (half the stable step of the lattice's
+// Laplacian, 0.070 s^2 / nu at H = 2 s) and, with surface tension, the capillary limit
 // dt <= 0.25 sqrt(rho0 s^3 / (2 pi sigma)) (Brackbill, Kothe & Zemach 1992, with the factor of
 // Adami, Hu & Adams 2010), s the particle spacing. v_ref = sqrt(2 g H), H the height of the liquid
 // along gravity, is the speed the flow can reach by falling: a scene at rest still gets a step that
@@ -20,8 +21,9 @@ class World;
 // The limits of the forces beside the pressure: the largest kinematic viscosity [m^2/s] and the
 // largest sigma / rho0 [m^3/s^2] of the solver's liquids.
 struct FluidForceLimits {
-  Real max_viscosity = 0;
+  Real max_viscosity = 0;  // 0 with implicit viscosity, which does not limit the step
   Real max_sigma_over_density = 0;
+  Real viscosity_stiffness = 0;  // [1/m^2] ViscosityOperator::stiffness
 };
 
 Real fluid_cfl_time_step(const World& world, const FluidForceLimits& limits, Real reference_speed);

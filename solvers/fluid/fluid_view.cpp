@@ -19,6 +19,17 @@ void FluidMaterialTable::load(const World& world, const std::vector<MaterialId>&
     viscosity[m] = Real(mats[m].param("viscosity"));
     boundary_viscosity[m] = Real(mats[m].param("boundary_viscosity"));
   }
+  implicit_viscosity = false;
+  viscosity_tolerance = 1;
+  viscosity_max_iterations = 1;
+  for (MaterialId m : materials) {
+    implicit_viscosity = implicit_viscosity || mats[m].param("implicit_viscosity") > 0;
+    viscosity_tolerance = std::min(viscosity_tolerance, mats[m].param("viscosity_tolerance"));
+    viscosity_max_iterations =
+        std::max(viscosity_max_iterations, int(mats[m].param("viscosity_max_iterations")));
+  }
+  viscosity_operator = upf::viscosity_operator(
+      world.settings().spacing, world.settings().support_radius(), implicit_viscosity);
   // Surface tension: the model of the solver's liquids with a sigma (the scene reader made them
   // agree); every liquid's coefficient under it, so that a neighbour of another solver pulls too.
   surface_model = SurfaceTensionModel::None;
@@ -66,6 +77,7 @@ FluidView make_fluid_view(const World& world, const FluidMaterialTable& material
   view.rest_density = materials.rest_density.data();
   view.viscosity = materials.viscosity.data();
   view.boundary_viscosity = materials.boundary_viscosity.data();
+  view.viscosity_factor = Real(materials.viscosity_operator.laplacian_factor);
   view.fluid = view_of(world.neighbours(lists.fluid));
   view.boundary = view_of(world.neighbours(lists.boundary));
   view.kernel = world.kernel();

@@ -10,6 +10,7 @@
 #include "framework/neighbours/neighbour_list.h"
 #include "framework/particles/particles.h"
 #include "solvers/fluid/surface_force_view.h"
+#include "solvers/fluid/viscosity_operator.h"
 
 namespace upf {
 
@@ -25,12 +26,20 @@ struct FluidView {
   const Real* rest_density = nullptr;        // per material
   const Real* viscosity = nullptr;           // per material, kinematic [m^2/s]
   const Real* boundary_viscosity = nullptr;  // per material, kinematic [m^2/s]
+  Real viscosity_factor = 10;                // F of the Laplacian (viscosity_operator.h)
   NeighbourView fluid;                       // fluid -> fluid
   NeighbourView boundary;                    // fluid -> frozen and rigid
   CubicSplineKernel kernel;
   // Walls and bodies carry the pressure of boundary_pressure.h; else Akinci et al.'s term alone.
   bool wall_pressure = false;
   SurfaceForceView surface;  // surface tension and adhesion (surface_forces.h); off by default
+  // With implicit viscosity (implicit_viscosity.h): the velocities its solve found, which the
+  // viscous reactions on bodies use; the explicit viscosity of fluid_forces.h is then off. Null:
+  // explicit viscosity.
+  const Vec3* solved_velocity = nullptr;
+  // With wall friction (a liquid's boundary_viscosity > 0): every boundary particle's velocity in
+  // the viscous sums, extrapolated from the liquid (wall_velocity.h). Null: their own.
+  const Vec3* wall_velocity = nullptr;
 };
 
 // The kernel gradients grad W_ij of a step's fluid pairs, by fluid-list slot k of particle i:
@@ -56,10 +65,16 @@ struct FluidGradients {
 // Akinci's beta per (liquid, boundary material) pair from the liquids' `adhesion`.
 struct FluidMaterialTable {
   std::vector<Real> rest_density, viscosity, boundary_viscosity;
+  ViscosityOperator viscosity_operator;  // the Laplacian's F and stiffness at this spacing
   SurfaceTensionModel surface_model = SurfaceTensionModel::None;
   std::vector<Real> cohesion, adhesion;
   bool has_adhesion = false;
   Real max_sigma_over_density = 0;  // [m^3/s^2] the capillary time-step limit's largest sigma/rho0
+  // Implicit viscosity (implicit_viscosity.h): whether the solver's liquids ask for it (the scene
+  // reader made them agree), and the strictest tolerance and largest iteration cap among them.
+  bool implicit_viscosity = false;
+  double viscosity_tolerance = 1e-3;
+  int viscosity_max_iterations = 100;
   // Reads the constants of every material; the surface model of `materials` (the solver's).
   void load(const World& world, const std::vector<MaterialId>& materials);
 };

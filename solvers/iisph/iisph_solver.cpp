@@ -68,7 +68,7 @@ void IisphSolver::step(World& world, Real dt, StageRunner& run) {
     f = fluid_.begin_step(world);
     density = p[fluid_.density_field].data();
     pressure = p[fluid_.pressure_field].data();
-    fluid_.shared_forces(world, f, density);
+    fluid_.shared_forces(world, f, density, dt);
     arrays = {f,
               fluid_.owned.range(),
               n,

@@ -97,7 +97,7 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
     f = fluid_.begin_step(world);
     density = p[fluid_.density_field].data();
     pressure = p[fluid_.pressure_field].data();
-    fluid_.shared_forces(world, f, density);
+    fluid_.shared_forces(world, f, density, dt);
     exec.run(fluid_.owned.range(), ClearPressureStage{pressure, fluid_.pressure_acceleration});
   });
 

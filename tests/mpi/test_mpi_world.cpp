@@ -185,6 +185,20 @@ TEST(SplitWorld, SurfaceTensionIsBitwiseTheOneRankRun) {
   }
 }
 
+// Implicit viscosity: the conjugate gradient reads its neighbours' search directions (fields the
+// ghosts carry) and steers by exact global dot products, so its iteration counts and its bits are
+// the one-rank run's; the no-slip walls' velocities come from liquid on other ranks too.
+TEST(SplitWorld, ImplicitViscosityIsBitwiseTheOneRankRun) {
+  for (const std::string solver : {"pcisph", "dfsph"}) {
+    SCOPED_TRACE(solver);
+    auto doc = small_dam_break(solver);
+    doc["materials"]["water"]["viscosity"] = 0.05;
+    doc["materials"]["water"]["boundary_viscosity"] = 0.05;
+    doc["materials"]["water"]["implicit_viscosity"] = 1;
+    expect_same_as_one_rank(doc, 60);
+  }
+}
+
 TEST(SplitWorld, RebalancingEveryStepOrNeverChangesNoBit) {
   expect_same_as_one_rank(small_dam_break(), 80, 1);
   expect_same_as_one_rank(small_dam_break(), 80, 0);

@@ -145,6 +145,21 @@ TEST_P(EveryFluidSolver, SurfaceTensionAndAdhesionConserveMomentumWithABody) {
                        ", with cohesion and adhesion");
 }
 
+// The same with implicit viscosity (Weiler et al. 2018) and viscous friction on the cube: the
+// solve's forces are taken pair by pair at the solved velocities, with a symmetric coefficient,
+// and their reactions on the cube at the same velocities (implicit_viscosity.h), so water and cube
+// keep their momentum whatever the solver's residual (a loose tolerance here).
+TEST_P(EveryFluidSolver, ImplicitViscosityConservesMomentumWithABody) {
+  auto doc = cube_shot_into_water(solver_without_gravity(GetParam()));
+  auto& water = doc["materials"]["water"];
+  water["viscosity"] = 0.05;  // m^2/s: the explicit step would be 4e-4 s, the run's 4e-4 s
+  water["boundary_viscosity"] = 0.05;
+  water["implicit_viscosity"] = 1;
+  water["viscosity_tolerance"] = 0.01;
+  expect_momentum_kept(doc, "Newton's third law (Weiler et al. 2018 pair forces)",
+                       ", with implicit viscosity");
+}
+
 // As DemFluid.BeadAndWaterConserveMomentumWithoutGravity: the liquid gathers the opposite of the
 // grain's fluid force (CouplingArray::LiquidForce), so bead + water keep their momentum.
 TEST_P(EveryFluidSolver, TakesUpTheMomentumAGrainLosesToDrag) {
