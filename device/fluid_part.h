@@ -121,6 +121,7 @@ class FluidPart final : public SolverPart<Backend> {
            liquid_force, step.pressure, step.f.surface.on() ? raw<Vec3>(surface_normal_) : nullptr,
            wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{}, wall_velocity, n},
           state.world.gravity, viscous);
+      viscosity_iterations_ = viscosity_stats.iterations;
       if (!viscosity_stats.converged)
         throw ConvergenceError(implicit_viscosity_failure(viscosity_stats, setup_.viscosity_solve));
       method_.non_pressure(exec, step);
@@ -129,7 +130,10 @@ class FluidPart final : public SolverPart<Backend> {
     if constexpr (Method::kDivergenceStage)
       stages_("divergence", [&] { method_.divergence(exec, step); });
 
-    stages_("pressure", [&] { stats_ = method_.pressure(exec, step); });
+    stages_("pressure", [&] {
+      stats_ = method_.pressure(exec, step);
+      if (setup_.implicit_viscosity) stats_.viscosity_iterations = viscosity_iterations_;
+    });
 
     stages_("integration", [&] {
       if (step.boundary_force) method_.add_reactions(exec, step);
@@ -178,6 +182,7 @@ class FluidPart final : public SolverPart<Backend> {
   Method method_;
   StageRunner stages_;
   SolverStats stats_;
+  int viscosity_iterations_ = -1;
   int fluid_list_ = -1, boundary_list_ = -1, reaction_list_ = -1, wall_list_ = -1;
   vector<Real> rest_density_, viscosity_, boundary_viscosity_, cohesion_, adhesion_;
   vector<std::uint8_t> owns_;

@@ -184,6 +184,9 @@ class SolverPipeline final : public DevicePipeline {
                                                                            : st.avg_density_error;
       out.max_density_error = out.max_density_error > st.max_density_error ? out.max_density_error
                                                                            : st.max_density_error;
+      out.viscosity_iterations = out.viscosity_iterations > st.viscosity_iterations
+                                     ? out.viscosity_iterations
+                                     : st.viscosity_iterations;
     }
   }
 

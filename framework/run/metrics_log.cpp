@@ -16,11 +16,13 @@ double kinetic_energy(const Particles& particles, const CpuExecutor& exec) {
 }
 
 namespace {
-std::string metrics_header(const std::vector<std::string>& stages, bool sources) {
+std::string metrics_header(const std::vector<std::string>& stages, bool sources,
+                           bool viscosity_solve) {
   std::string h =
       "step,t,dt,iterations,avg_density_error,max_density_error,kinetic_energy,"
       "n_liquid,n_rigid,n_granular,n_frozen,";
   if (sources) h += "mass_in_kg,mass_out_kg,";
+  if (viscosity_solve) h += "viscosity_iterations,";
   h += "neighbour_ms";
   for (const auto& s : stages) h += ',' + s + "_ms";
   return h + ",wall_ms\n";
@@ -33,10 +35,11 @@ std::string probes_header(const std::vector<std::string>& names) {
 }  // namespace
 
 MetricsLog::MetricsLog(const std::filesystem::path& path, std::vector<std::string> stages,
-                       bool resuming, bool sources)
-    : log_(path, metrics_header(stages, sources), resuming),
+                       bool resuming, bool sources, bool viscosity_solve)
+    : log_(path, metrics_header(stages, sources, viscosity_solve), resuming),
       stages_(std::move(stages)),
-      sources_(sources) {}
+      sources_(sources),
+      viscosity_solve_(viscosity_solve) {}
 
 void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
   std::ostream& out = log_.out();
@@ -44,6 +47,7 @@ void MetricsLog::add(const StepMetrics& m, const StepReport& r) {
       << r.solver.avg_density_error << ',' << r.solver.max_density_error << ',' << m.kinetic_energy;
   for (std::size_t c : m.count_by_type) out << ',' << c;
   if (sources_) out << ',' << r.sources.mass_added << ',' << r.sources.mass_removed;
+  if (viscosity_solve_) out << ',' << r.solver.viscosity_iterations;
   out << ',' << r.neighbour_ms;
   for (const auto& s : stages_) {
     double ms = 0;

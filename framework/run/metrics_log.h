@@ -26,8 +26,10 @@ class MetricsLog {
   // `stages`: the world's stage list (World::stage_names()), one timing column each.
   // `resuming`: the file is left alone until restore_state opens it. `sources`: the world has
   // emitters or sinks, and each row says the mass they added and removed before its step.
+  // `viscosity_solve`: a liquid's viscosity is implicit, and each row says how many conjugate
+  // gradient iterations its solve took.
   MetricsLog(const std::filesystem::path& path, std::vector<std::string> stages,
-             bool resuming = false, bool sources = false);
+             bool resuming = false, bool sources = false, bool viscosity_solve = false);
   void add(const StepMetrics& m, const StepReport& r);
   void flush();
   void save_state(StateWriter& out);
@@ -37,6 +39,7 @@ class MetricsLog {
   ResumableLog log_;
   std::vector<std::string> stages_;  // stage columns
   bool sources_ = false;
+  bool viscosity_solve_ = false;
 };
 
 class ProbeLog {

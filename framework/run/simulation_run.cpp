@@ -58,6 +58,13 @@ void check_folder_records_scene(const std::filesystem::path& dir, const std::str
                          " differs from the checkpoint's scene): resuming would mix two runs");
 }
 
+// A liquid's viscosity is solved implicitly (metrics.csv then has viscosity_iterations).
+bool has_viscosity_solve(const SceneDescription& scene) {
+  for (const Material& m : scene.materials)
+    if (m.type == ParticleType::Liquid && m.param("implicit_viscosity") > 0) return true;
+  return false;
+}
+
 std::vector<std::string> probe_names(const SceneDescription& scene) {
   std::vector<std::string> names;
   for (const auto& p : scene.probes) names.push_back(p.name);
@@ -125,7 +132,7 @@ class RunRecorder {
         frames_(options.out_dir, scene, std::move(fields), options.write_frames, world,
                 frozen_count, options.vdb_writers, options.resume),
         metrics_(options.out_dir / "metrics.csv", world.stage_names(), options.resume,
-                 !world.sources().empty()),
+                 !world.sources().empty(), has_viscosity_solve(scene)),
         probes_(options.out_dir / "probes.csv", probe_names(scene), options.resume),
         tables_(world, options.out_dir, options.resume) {}
 

@@ -31,6 +31,8 @@ struct SolverStats {
   int iterations = 0;            // pressure (or constraint) iterations of the last step
   double avg_density_error = 0;  // average relative compression (rho - rho0)/rho0, >= 0
   double max_density_error = 0;
+  // Implicit viscosity's conjugate gradient iterations (implicit_viscosity.h); -1: no such solve.
+  int viscosity_iterations = -1;
 };
 
 class Solver {

@@ -224,6 +224,8 @@ void World::step(double dt) {
         std::max(report_.solver.avg_density_error, st.avg_density_error);
     report_.solver.max_density_error =
         std::max(report_.solver.max_density_error, st.max_density_error);
+    report_.solver.viscosity_iterations =
+        std::max(report_.solver.viscosity_iterations, st.viscosity_iterations);
   }
   Stopwatch body_watch;
   for (auto& b : bodies_) b->advance(*this, dt);

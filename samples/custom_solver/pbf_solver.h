@@ -75,7 +75,7 @@ class PbfSolver final : public Solver {
   Real max_time_step(const World& world) const override;
   std::vector<std::string> stages() const override;
   void step(World& world, Real dt, StageRunner& run) override;
-  SolverStats stats() const override { return stats_; }
+  SolverStats stats() const override { return fluid_.with_viscosity(stats_); }
 
   static ParamBinding<PbfParams> param_binding();
   // The denominator of eq. 11 for a particle with a full neighbourhood on a cubic lattice of

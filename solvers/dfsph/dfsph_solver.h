@@ -60,7 +60,7 @@ class DfsphSolver final : public Solver {
   Real max_time_step(const World& world) const override;
   std::vector<std::string> stages() const override;
   void step(World& world, Real dt, StageRunner& run) override;
-  SolverStats stats() const override { return stats_; }
+  SolverStats stats() const override { return fluid_.with_viscosity(stats_); }
 
   static ParamBinding<DfsphParams> param_binding();
   // The warm starts' fields: K / dt^2 and K / dt of the last step.

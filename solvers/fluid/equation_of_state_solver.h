@@ -24,7 +24,7 @@ class EquationOfStateSolver : public Solver {
   void initialize_fields(World& world) override { fluid_.initial_density(world); }
   std::vector<std::string> stages() const final;
   void step(World& world, Real dt, StageRunner& run) final;
-  SolverStats stats() const final { return stats_; }
+  SolverStats stats() const final { return fluid_.with_viscosity(stats_); }
   // The shared fluid state, for the device pipeline (device/).
   const FluidSolverState& fluid_state() const { return fluid_; }
 

@@ -69,6 +69,11 @@ struct FluidSolverState {
   ImplicitViscosityArrays viscosity_arrays{};  // begin_step points them at the fields
   ImplicitViscosityStats viscosity_stats;
   bool implicit_viscosity() const { return table.implicit_viscosity; }
+  // A solver's statistics with the last viscous solve's iterations (SolverStats).
+  SolverStats with_viscosity(SolverStats s) const {
+    if (implicit_viscosity()) s.viscosity_iterations = viscosity_stats.iterations;
+    return s;
+  }
 
   // Creates the exported fields `density` and `pressure`, requests the neighbour lists and loads
   // the constants of `materials`.

@@ -175,6 +175,8 @@ struct ViscosityStartStage {
 
 // The block-Jacobi preconditioner D_i^-1, D_i = m_i I + dt sum c (-grad W) x^T, and the residual
 // r_i = m_i v*_i - (m_i u_i - dt F_i(u)) with the walls' and bodies' velocities, then z = D^-1 r.
+// F_i(u) goes into `product` (free until the first iteration): when the warm start is already
+// within the tolerance, it is the force, and no second pass over the neighbours is needed.
 struct ViscosityResidualStage {
   FluidView f;
   const Real* density;
@@ -202,6 +204,7 @@ struct ViscosityResidualStage {
     const Vec3 r = b - (a.solution[i] * m - force * dt);
     a.residual[i] = r;
     a.preconditioned[i] = implicit_viscosity_detail::apply_inverse(inv_d, inv_o, r);
+    a.product[i] = force;
   }
 };
 
@@ -241,17 +244,19 @@ struct ViscositySearchStage {
 };
 
 // a_visc = F_i(u) / m_i at the solved velocities, kept for the next warm start and added to
-// a_other.
+// a_other; with `force_known`, F_i(u) is the residual stage's (no iteration moved u).
 struct ViscousAccelerationStage {
   FluidView f;
   const Real* density;
   FluidGradients gradient;
   ImplicitViscosityArrays a;
   Vec3* other_acceleration;
+  bool force_known;
   UPF_HD void operator()(std::uint32_t i) const {
-    const Vec3 acc =
-        implicit_viscosity_detail::viscous_force(f, density, gradient, a.solution, true, i) /
-        f.mass[i];
+    const Vec3 force = force_known ? a.product[i]
+                                   : implicit_viscosity_detail::viscous_force(f, density, gradient,
+                                                                              a.solution, true, i);
+    const Vec3 acc = force / f.mass[i];
     a.warm[i] = acc;
     other_acceleration[i] += acc;
   }
@@ -328,7 +333,8 @@ ImplicitViscosityStats solve_implicit_viscosity(const Executor& exec, ParticleRa
     ++stats.iterations;
   }
   stats.residual = b_norm > 0 ? std::sqrt(rz / b_norm) : std::sqrt(rz);
-  exec.run(owned, ViscousAccelerationStage{f, density, gradient, a, other_acceleration});
+  exec.run(owned, ViscousAccelerationStage{f, density, gradient, a, other_acceleration,
+                                           stats.iterations == 0});
   return stats;
 }
 

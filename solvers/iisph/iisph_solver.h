@@ -44,7 +44,7 @@ class IisphSolver final : public Solver {
   Real max_time_step(const World& world) const override;
   std::vector<std::string> stages() const override;
   void step(World& world, Real dt, StageRunner& run) override;
-  SolverStats stats() const override { return stats_; }
+  SolverStats stats() const override { return fluid_.with_viscosity(stats_); }
 
   // What the device pipeline needs to run this solver's step (device/): the solve's settings
   // (iisph_solve.h), the stopping test and the shared fluid state.

@@ -49,7 +49,7 @@ class PcisphSolver final : public Solver {
   Real max_time_step(const World& world) const override;
   std::vector<std::string> stages() const override;
   void step(World& world, Real dt, StageRunner& run) override;
-  SolverStats stats() const override { return stats_; }
+  SolverStats stats() const override { return fluid_.with_viscosity(stats_); }
 
   // What a device pipeline needs to run this solver's step on its own arrays (device/): the
   // correction loop's settings (pcisph_correction_loop.h) and the shared fluid state.
