@@ -185,6 +185,8 @@ void bind_simulation(py::module_& m) {
              d["iterations"] = r.solver.iterations;
              d["avg_density_error"] = r.solver.avg_density_error;
              d["max_density_error"] = r.solver.max_density_error;
+             // Implicit viscosity's conjugate gradient iterations; -1 without one.
+             d["viscosity_iterations"] = r.solver.viscosity_iterations;
              d["stage_ms"] = r.stage_ms;
              return d;
            })

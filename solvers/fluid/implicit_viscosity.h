@@ -45,8 +45,6 @@ struct ImplicitViscositySettings {
   int max_iterations = 100;
 };
 
-// Per particle arrays, fields of the particles (ghosts carry them; ghost refreshes follow every
-// stage on a split world). `warm` holds the last step's viscous acceleration across steps.
 // The arrays' field names, in the order of ImplicitViscosityArrays' members: FluidSolverState
 // declares them (all but the last as per-step scratch), the device pipeline finds them by name.
 inline constexpr int kImplicitViscosityFieldCount = 8;
@@ -60,11 +58,13 @@ inline constexpr const char* kImplicitViscosityFields[kImplicitViscosityFieldCou
     "viscosity.inverse_off_diagonal",
     "viscosity.acceleration"};
 
+// Per particle arrays, fields of the particles (ghosts carry them; ghost refreshes follow every
+// stage on a split world). `warm` holds the last step's viscous acceleration across steps.
 struct ImplicitViscosityArrays {
   Vec3* solution;          // u: the velocities solved for (known ones for the particles not solved)
   Vec3* residual;          // r = b - A u
   Vec3* search;            // p, zero outside the solved particles
-  Vec3* product;           // A p
+  Vec3* product;           // A p; before the first iteration F_i(u) of the warm start
   Vec3* preconditioned;    // z = D^-1 r
   Vec3* inverse_diagonal;  // D_i^-1, the symmetric block's xx, yy, zz
   Vec3* inverse_off_diagonal;  // and its xy, xz, yz
