@@ -12,7 +12,6 @@
 #include <utility>
 
 #include "device/solver_part.h"
-#include "framework/core/errors.h"
 #include "solvers/fluid/fluid_stages.h"
 
 namespace upf::device {
@@ -122,8 +121,6 @@ class FluidPart final : public SolverPart<Backend> {
            wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{}, wall_velocity, n},
           state.world.gravity, viscous);
       viscosity_iterations_ = viscosity_stats.iterations;
-      if (!viscosity_stats.converged)
-        throw ConvergenceError(implicit_viscosity_failure(viscosity_stats, setup_.viscosity_solve));
       method_.non_pressure(exec, step);
     });
 

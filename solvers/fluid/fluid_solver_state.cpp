@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "framework/core/errors.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_forces.h"
 
@@ -27,9 +26,9 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
     wall_velocity_field = p.declare_scratch_vector(kWallVelocityField);
   }
   max_viscosity = 0;
-  if (!implicit_viscosity())
+  if (!implicit_viscosity()) {
     for (MaterialId m : materials) max_viscosity = std::max(max_viscosity, table.viscosity[m]);
-  if (implicit_viscosity()) {
+  } else {
     // Names from implicit_viscosity.h; the last, the warm start, lives across steps.
     for (int k = 0; k + 1 < kImplicitViscosityFieldCount; ++k)
       p.declare_scratch_vector(kImplicitViscosityFields[k]);
@@ -87,8 +86,6 @@ void FluidSolverState::shared_forces(const World& world, const FluidView& f, Rea
        wall_list >= 0 ? view_of(world.neighbours(wall_list)) : NeighbourView{}, wall_velocity,
        world.particles().size()},
       world.settings().gravity, viscous);
-  if (!viscosity_stats.converged)
-    throw ConvergenceError(implicit_viscosity_failure(viscosity_stats, viscous.settings));
 }
 
 void FluidSolverState::predict_unowned(const World& world, const FluidView& f, Vec3* x_star,

@@ -85,8 +85,8 @@ struct FluidSolverState {
   void initial_density(World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
   // With f.wall_pressure, also the hydrostatic part of the wall pressure (boundary_pressure.h).
-  // With implicit viscosity, solves it for a step of dt; throws ConvergenceError when the solve
-  // does not reach its tolerance within its cap.
+  // With implicit viscosity, solves it for a step of dt (run_non_pressure_stages throws
+  // ConvergenceError when the solve does not reach its tolerance within its cap).
   void shared_forces(const World& world, const FluidView& f, Real* density, Real dt);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array
   // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor` is P_i of

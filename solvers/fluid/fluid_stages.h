@@ -3,6 +3,7 @@
 // executors and backends"). C++17: nvcc compiles these too (fluid_cuda_check.cu).
 #pragma once
 
+#include "framework/core/errors.h"
 #include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_view.h"
@@ -106,7 +107,7 @@ struct CompressionValue {
 // a_other = g + viscosity + surface forces, plus F / m from other materials when `liquid_force`
 // is not null; with `viscous.arrays` (implicit viscosity) the viscosity comes last, solved at the
 // end-of-step velocities these accelerations give (implicit_viscosity.h): its statistics are
-// returned, and the caller reports a solve that did not converge.
+// returned, and a solve that does not converge throws ConvergenceError.
 struct NonPressureArrays {
   FluidGradients fluid_gradient;
   Vec3* boundary_gradient;
@@ -136,9 +137,12 @@ ImplicitViscosityStats run_non_pressure_stages(const Executor& exec, ParticleRan
   if (a.liquid_force)
     exec.run(owned, AddForceOverMassStage{a.liquid_force, f.mass, a.other_acceleration});
   if (!viscous.arrays) return {};
-  return solve_implicit_viscosity(exec, owned, viscous.all, f, viscous.owns, a.density,
-                                  a.fluid_gradient, a.other_acceleration, *viscous.arrays,
-                                  viscous.settings, viscous.dt);
+  const ImplicitViscosityStats stats = solve_implicit_viscosity(
+      exec, owned, viscous.all, f, viscous.owns, a.density, a.fluid_gradient,
+      a.other_acceleration, *viscous.arrays, viscous.settings, viscous.dt);
+  if (!stats.converged)
+    throw ConvergenceError(implicit_viscosity_failure(stats, viscous.settings));
+  return stats;
 }
 
 }  // namespace upf
