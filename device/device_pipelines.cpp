@@ -58,6 +58,7 @@ void check_covered(const World& world, const std::string& where) {
   setup.reactions = fluid.reaction_list >= 0;
   setup.wall_friction = fluid.wall_list >= 0;
   setup.wall_pressure = fluid.wall_pressure;
+  setup.density_contrast = fluid.table.density_contrast;
   setup.stages = solver.stages();
   return setup;
 }

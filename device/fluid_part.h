@@ -166,6 +166,7 @@ class FluidPart final : public SolverPart<Backend> {
     f.boundary = state.lists.view(boundary_list_);
     f.kernel = CubicSplineKernel(state.world.support_radius);
     f.wall_pressure = setup_.wall_pressure;
+    f.density_contrast = setup_.density_contrast;
     f.surface.model = setup_.surface_model;
     f.surface.cohesion = raw<Real>(cohesion_);
     f.surface.adhesion = raw<Real>(adhesion_);

@@ -38,6 +38,7 @@ struct FluidSetup {
   // where used: the same bits either way (FluidGradients).
   bool store_gradients = false;
   bool wall_pressure = false;       // FluidSolverState::wall_pressure
+  bool density_contrast = false;    // FluidMaterialTable::density_contrast
   std::vector<std::string> stages;  // the solver's stage names, for the metrics
   std::string density = "density", pressure = "pressure";  // the exported fields
 };

@@ -10,6 +10,7 @@
 
 #include "framework/core/file_name.h"
 #include "framework/scene/json_input.h"
+#include "framework/scene/liquid_mix_keys.h"
 #include "framework/scene/surface_tension_keys.h"
 #include "framework/scene/viscosity_keys.h"
 #include "framework/scene/world_setting_specs.h"
@@ -322,6 +323,7 @@ void read_materials(JsonInput& in, const json& doc, const Registry& registry,
     }
   check_surface_tension_keys(in, registry, scene);
   check_viscosity_keys(in, scene);
+  check_liquid_mix_keys(in, registry, scene);
 }
 
 // /containers: boxes of frozen wall particles.

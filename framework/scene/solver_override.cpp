@@ -24,6 +24,22 @@ std::string unknown_solver_message(const std::string& name, const Registry& regi
   return msg + "; registered solvers: " + (list.empty() ? "none" : list);
 }
 
+// Two liquids of different rest density: only solvers with the density-contrast forms hold them.
+bool liquids_differ_in_density(const SceneDescription& scene) {
+  const Material* first = nullptr;
+  for (const auto& m : scene.materials) {
+    if (m.type != ParticleType::Liquid) continue;
+    if (first && m.param("density") != first->param("density")) return true;
+    if (!first) first = &m;
+  }
+  return false;
+}
+
+bool can_move(const SolverInfo& s, const SceneDescription& scene) {
+  if (!has_material_of_type(scene, s.type)) return false;
+  return s.type != ParticleType::Liquid || s.density_contrast || !liquids_differ_in_density(scene);
+}
+
 }  // namespace
 
 SceneDescription with_solver(const SceneDescription& scene, const Registry& registry,
@@ -35,6 +51,10 @@ SceneDescription with_solver(const SceneDescription& scene, const Registry& regi
     throw InputError(where, "solver '" + solver + "' moves " + type + " particles, but scene '" +
                                 scene.name + "' has no " + type + " material");
   }
+  if (!can_move(*info, scene))
+    throw InputError(where, "solver '" + solver + "' sums densities over neighbours' masses and "
+                            "cannot hold the liquids of scene '" + scene.name +
+                                "', whose rest densities differ (docs/multiphase.md)");
   // Materials sharing a solver share one instance and so one parameter set: the scene's, when
   // one of its materials already names this solver.
   ParamValues params(info->params);
@@ -56,7 +76,7 @@ std::vector<std::string> solvers_for_scene(const SceneDescription& scene,
                                            const Registry& registry) {
   std::vector<std::string> names;
   for (const auto& s : registry.solvers())
-    if (has_material_of_type(scene, s.type)) names.push_back(s.name);
+    if (can_move(s, scene)) names.push_back(s.name);
   return names;
 }
 

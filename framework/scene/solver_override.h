@@ -14,11 +14,12 @@ namespace upf {
 // The scene with `solver` moving every material of its particle type. Parameters the scene gives
 // that solver are kept (a material already naming it sets them for all); otherwise the solver's
 // defaults apply. Throws InputError at `where` for an unknown solver (listing the registered ones,
-// with a did-you-mean) or one whose particle type no material of the scene has.
+// with a did-you-mean), one whose particle type no material of the scene has, or a liquid solver
+// without the density-contrast forms for liquids of different rest density.
 SceneDescription with_solver(const SceneDescription& scene, const Registry& registry,
                              const std::string& solver, const std::string& where = "--solver");
 
-// Registered solvers, in registry order, whose particle type some material of the scene has.
+// Registered solvers, in registry order, that with_solver accepts for the scene.
 std::vector<std::string> solvers_for_scene(const SceneDescription& scene, const Registry& registry);
 
 }  // namespace upf

@@ -29,6 +29,10 @@ struct SolverInfo {
   // The coupling arrays the solver writes and reads (framework/world/coupling.h): the world
   // orders solvers by them and refuses a scene whose reads nobody writes.
   CouplingUse coupling;
+  // Liquids only: the solver holds liquids of different rest density at one interface (the
+  // number-density forms of solvers/fluid/density_contrast.h); a scene that mixes densities under
+  // a solver without it is refused.
+  bool density_contrast = false;
 };
 
 // A surface tension model the liquids may name (scene key "surface_tension_model"); the shared

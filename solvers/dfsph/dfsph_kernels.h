@@ -14,10 +14,12 @@
 // solver uses rho_adv_i = rho0 + dt max(Drho_i/Dt, 0), so the same K formula cancels the
 // density's rate of change, Drho_i/Dt (density_rate.h, with D_i).
 // All particles update at once (Jacobi), so the relaxation omega (the paper: 1) damps the
-// checkerboard modes that a full step overshoots; dfsph_solver.h says why upf uses 0.5.
+// checkerboard modes that a full step overshoots; dfsph_solver.h says why upf uses 0.5. Where
+// liquids differ in rest density, the sums take the number-density forms of density_contrast.h.
 #pragma once
 
 #include "solvers/fluid/boundary_pressure.h"
+#include "solvers/fluid/density_contrast.h"
 #include "solvers/fluid/density_rate.h"
 
 namespace upf {
@@ -110,7 +112,7 @@ struct DfsphVelocityStage {
                                             mirrored_pressure_factor(f, FactorArray{k}, i), i);
     for (std::uint32_t n = f.fluid.offsets[i]; n < f.fluid.offsets[i + 1]; ++n) {
       const std::uint32_t j = f.fluid.indices[n];
-      a -= fluid_gradient.at(f, i, n) * (f.mass[j] * (ki + k[j]));
+      a -= fluid_gradient.at(f, i, n) * pressure_pair(f, i, j, ki, k[j]);
     }
     v[i] += a * dt;
   }

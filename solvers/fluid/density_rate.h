@@ -9,9 +9,11 @@
 //   D_i = |sum_j m_j grad W_ij + rho0_i sum_b V_b grad W_ib|^2 + sum_j m_i m_j |grad W_ij|^2
 // (equal masses: the DFSPH paper's rho_i / alpha_i, and -rho_i^2 a_ii / dt^2 of IISPH). The
 // wall's own pressure term, rho0_i K_b sum_b V_b grad W_ib (boundary_pressure.h), is a
-// neighbourhood average of K and is left to the off-diagonal part.
+// neighbourhood average of K and is left to the off-diagonal part. Where liquids differ in rest
+// density, m_i stands for m_j in the sums and D_i follows (density_contrast.h).
 #pragma once
 
+#include "solvers/fluid/density_contrast.h"
 #include "solvers/fluid/fluid_view.h"
 
 namespace upf {
@@ -28,9 +30,10 @@ struct InverseDiagonalStage {
     Vec3 sum = boundary_gradient[i] * rho0;
     Real sum_squares = 0;
     for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-      const Vec3 g = fluid_gradient.at(f, i, k) * f.mass[f.fluid.indices[k]];
+      const std::uint32_t j = f.fluid.indices[k];
+      const Vec3 g = fluid_gradient.at(f, i, k) * density_weight(f, i, j);
       sum += g;
-      sum_squares += squared_norm(g);
+      sum_squares += diagonal_pair(f, i, j, g);
     }
     const Real d = squared_norm(sum) + sum_squares;
     inverse_diagonal[i] = d > Real(0) ? Real(1) / d : Real(0);
@@ -59,7 +62,7 @@ UPF_HD inline Real density_rate(const FluidView& f, FluidGradients fluid_gradien
   Real rate = 0;
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    rate += f.mass[j] * dot(vi - v[j], fluid_gradient.at(f, i, k));
+    rate += density_weight(f, i, j) * dot(vi - v[j], fluid_gradient.at(f, i, k));
   }
   const Real rho0 = f.rest_density[f.material[i]];
   return rate + rho0 * (dot(vi, boundary_gradient) - boundary_divergence);

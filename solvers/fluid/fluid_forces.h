@@ -2,7 +2,8 @@
 // pressure solver.
 //
 // Density: SPH summation over fluid neighbours plus the boundary term of Akinci et al. 2012,
-//   rho_i = sum_j m_j W_ij + sum_b Psi_b W_ib,  Psi_b = rho0_i V_b.
+//   rho_i = sum_j m_j W_ij + sum_b Psi_b W_ib,  Psi_b = rho0_i V_b,
+//   with m_i for m_j where liquids differ in rest density (density_contrast.h).
 // Viscosity: the Laplacian approximation of Monaghan 2005 ("Smoothed particle hydrodynamics",
 //   Rep. Prog. Phys. 68, eq. 6.1 form used with a kinematic viscosity nu):
 //   a_i = F nu sum_j (m_j / rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 H^2) grad W_ij,
@@ -10,6 +11,7 @@
 //   paper's 2 (d + 2) calibrated on the particle lattice (viscosity_operator.h).
 #pragma once
 
+#include "solvers/fluid/density_contrast.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/wall_velocity.h"
 
@@ -23,7 +25,7 @@ UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32
   Real rho = f.mass[i] * f.kernel.value(Real(0));
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    rho += f.mass[j] * f.kernel.value(xi - xf[j]);
+    rho += density_weight(f, i, j) * f.kernel.value(xi - xf[j]);
   }
   const Real rho0 = f.rest_density[f.material[i]];
   for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
@@ -48,7 +50,7 @@ UPF_HD inline Real density_and_gradients(const FluidView& f, FluidGradients flui
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
     Vec3 g;
-    rho += f.mass[j] * f.kernel.value_and_gradient(xi - f.x[j], g);
+    rho += density_weight(f, i, j) * f.kernel.value_and_gradient(xi - f.x[j], g);
     if (fluid_gradient.stored) fluid_gradient.stored[k] = g;
     if (normal) n += g * (f.mass[j] / f.rest_density[f.material[j]]);
   }

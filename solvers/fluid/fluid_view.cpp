@@ -19,6 +19,13 @@ void FluidMaterialTable::load(const World& world, const std::vector<MaterialId>&
     viscosity[m] = Real(mats[m].param("viscosity"));
     boundary_viscosity[m] = Real(mats[m].param("boundary_viscosity"));
   }
+  // Every liquid's, not only the solver's: the fluid lists hold every liquid particle.
+  density_contrast = false;
+  for (std::size_t m = 0; m < n; ++m)
+    for (std::size_t k = 0; k < m; ++k)
+      if (mats[m].type == ParticleType::Liquid && mats[k].type == ParticleType::Liquid &&
+          rest_density[m] != rest_density[k])
+        density_contrast = true;
   implicit_viscosity = false;
   viscosity_tolerance = 1;
   viscosity_max_iterations = 1;
@@ -78,6 +85,7 @@ FluidView make_fluid_view(const World& world, const FluidMaterialTable& material
   view.viscosity = materials.viscosity.data();
   view.boundary_viscosity = materials.boundary_viscosity.data();
   view.viscosity_factor = Real(materials.viscosity_operator.laplacian_factor);
+  view.density_contrast = materials.density_contrast;
   view.fluid = view_of(world.neighbours(lists.fluid));
   view.boundary = view_of(world.neighbours(lists.boundary));
   view.kernel = world.kernel();

@@ -32,6 +32,9 @@ struct FluidView {
   CubicSplineKernel kernel;
   // Walls and bodies carry the pressure of boundary_pressure.h; else Akinci et al.'s term alone.
   bool wall_pressure = false;
+  // The liquids differ in rest density: density and pressure take the number-density forms of
+  // Solenthaler & Pajarola 2008 (density_contrast.h).
+  bool density_contrast = false;
   SurfaceForceView surface;  // surface tension and adhesion (surface_forces.h); off by default
   // With implicit viscosity (implicit_viscosity.h): the velocities its solve found, which the
   // viscous reactions on bodies use; the explicit viscosity of fluid_forces.h is then off. Null:
@@ -65,6 +68,7 @@ struct FluidGradients {
 // Akinci's beta per (liquid, boundary material) pair from the liquids' `adhesion`.
 struct FluidMaterialTable {
   std::vector<Real> rest_density, viscosity, boundary_viscosity;
+  bool density_contrast = false;  // the world's liquids differ in rest density (density_contrast.h)
   ViscosityOperator viscosity_operator;  // the Laplacian's F and stiffness at this spacing
   SurfaceTensionModel surface_model = SurfaceTensionModel::None;
   std::vector<Real> cohesion, adhesion;

@@ -12,10 +12,12 @@
 //   p_i  <- max(0, p_i + omega (rho0 - rho_adv_i - (A p)_i) / a_ii)
 // with rho_adv_i = rho_i + dt Drho_i/Dt at v_adv = v + dt a_other. Akinci et al. 2012
 // boundaries, Psi_b = rho0_i V_b, with the wall pressure p_b of boundary_pressure.h; the diagonal
-// takes i's pressure through p_i only (in p_b it is one kernel weight among many).
+// takes i's pressure through p_i only (in p_b it is one kernel weight among many). Where liquids
+// differ in rest density, the sums take the number-density forms of density_contrast.h.
 #pragma once
 
 #include "solvers/fluid/boundary_pressure.h"
+#include "solvers/fluid/density_contrast.h"
 #include "solvers/fluid/density_rate.h"
 
 namespace upf {
@@ -57,8 +59,8 @@ struct IisphPressureAccelerationStage {
     Vec3 a = boundary_pressure_acceleration(f, boundary_gradient[i], pi, pb, i);
     for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
       const std::uint32_t j = f.fluid.indices[k];
-      a -=
-          fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
+      a -= fluid_gradient.at(f, i, k) *
+           pressure_pair(f, i, j, pi, pressure[j] / (density[j] * density[j]));
     }
     a_pressure[i] = a;
   }
@@ -85,7 +87,7 @@ struct IisphPressureUpdateStage {
     Real change = rho0 * dot(ai, boundary_gradient[i]);
     for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
       const std::uint32_t j = f.fluid.indices[k];
-      change += f.mass[j] * dot(ai - a_pressure[j], fluid_gradient.at(f, i, k));
+      change += density_weight(f, i, j) * dot(ai - a_pressure[j], fluid_gradient.at(f, i, k));
     }
     change *= dt * dt;
     predicted[i] = rho_adv[i] + change;

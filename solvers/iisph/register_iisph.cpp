@@ -20,6 +20,7 @@ void register_iisph(Registry& registry) {
                                              std::move(materials));
       },
       fluid_solver_coupling(),
+      /*density_contrast=*/true,
   });
 }
 

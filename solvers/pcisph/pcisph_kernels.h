@@ -12,6 +12,7 @@ namespace upf {
 // form and rest densities in the denominators (as in the derivation of delta):
 //   a_i = -sum_j m_j (p_i/rho0_i^2 + p_j/rho0_j^2) grad W_ij
 //         -sum_b Psi_b (p_i + p_b)/rho0_i^2 grad W_ib    (boundary_pressure.h)
+// (the pair term of density_contrast.h where liquids differ in rest density)
 // `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from density_and_gradients:
 // the positions do not move during the correction loop, so neither do the gradients.
 UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* pressure,
@@ -23,11 +24,40 @@ UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* 
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
     const Real rho0j = f.rest_density[f.material[j]];
-    a -= fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (rho0j * rho0j)));
+    a -= fluid_gradient.at(f, i, k) * pressure_pair(f, i, j, pi, pressure[j] / (rho0j * rho0j));
   }
   const Real pb = mirrored_pressure_factor(
       f, PressureOverRestDensitySquared{pressure, f.rest_density, f.material}, i);
   return a + boundary_pressure_acceleration(f, boundary_gradient, pi, pb, i);
+}
+
+// fluid_density with density contrast, and the ratio that scales delta for particle i:
+//   r_i = sum_j (rho0_i / rho0_j) |grad W_ij|^2 / sum_j |grad W_ij|^2   (1 without neighbours).
+// delta is the inverse of the diagonal of the pressure-to-density map on a one-liquid lattice,
+// where the neighbours' share, sum_j |grad W_ij|^2, dominates it. With density contrast a
+// neighbour j moves by p_i / rho0_j, and the diagonal grows by r_i: a heavy particle among light
+// ones (r = 5.5 at a ratio of 10, half its neighbours light) over-corrected its error five-fold
+// and PCISPH diverged at the interface (docs/multiphase.md).
+UPF_HD inline Real contrast_density(const FluidView& f, const Vec3* xf, std::uint32_t i,
+                                    Real& ratio) {
+  const Vec3 xi = xf[i];
+  const Real mi = f.mass[i];
+  const Real rho0 = f.rest_density[f.material[i]];
+  Real rho = mi * f.kernel.value(Real(0)), weighted = 0, plain = 0;
+  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+    const std::uint32_t j = f.fluid.indices[k];
+    Vec3 g;
+    rho += mi * f.kernel.value_and_gradient(xi - xf[j], g);
+    const Real g2 = squared_norm(g);
+    plain += g2;
+    weighted += g2 * (rho0 / f.rest_density[f.material[j]]);
+  }
+  ratio = plain > Real(0) ? weighted / plain : Real(1);
+  for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
+    const std::uint32_t b = f.boundary.indices[k];
+    rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - xf[b]);
+  }
+  return rho;
 }
 
 // Step 1 of the loop: v* = v + (a_other + a_p) dt, x* = x + v* dt.
@@ -51,9 +81,16 @@ struct PcisphCorrectPressureStage {
   Real* rho_star;
   Real* pressure;
   UPF_HD void operator()(std::uint32_t i) const {
-    rho_star[i] = fluid_density(f, x_star, i);
     const Real rho0 = f.rest_density[f.material[i]];
-    const Real p = pressure[i] + delta * (rho_star[i] - rho0);
+    Real correction = delta;
+    if (f.density_contrast) {
+      Real ratio;
+      rho_star[i] = contrast_density(f, x_star, i, ratio);
+      correction = delta / ratio;
+    } else {
+      rho_star[i] = fluid_density(f, x_star, i);
+    }
+    const Real p = pressure[i] + correction * (rho_star[i] - rho0);
     pressure[i] = p > 0 ? p : Real(0);
   }
 };

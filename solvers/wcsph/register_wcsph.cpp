@@ -19,6 +19,7 @@ void register_wcsph(Registry& registry) {
                                              std::move(materials));
       },
       fluid_solver_coupling(),
+      /*density_contrast=*/true,
   });
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "solvers/fluid/boundary_pressure.h"
+#include "solvers/fluid/density_contrast.h"
 #include "solvers/fluid/fluid_view.h"
 
 namespace upf {
@@ -20,7 +21,8 @@ UPF_HD inline Real tait_pressure(Real rho, Real rest_density, Real b) {
 // Pressure acceleration, the paper's symmetric form (eq. 5):
 //   a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij
 //         -sum_b Psi_b (p_i + p_b) / rho_i^2 grad W_ib    (boundary_pressure.h)
-// `boundary_gradient` is sum_b V_b grad W_ib; Psi_b = rho0_i V_b.
+// `boundary_gradient` is sum_b V_b grad W_ib; Psi_b = rho0_i V_b. Where liquids differ in rest
+// density, the pair term of density_contrast.h.
 UPF_HD inline Vec3 wcsph_pressure_acceleration(const FluidView& f, const Real* density,
                                                const Real* pressure, FluidGradients fluid_gradient,
                                                const Vec3& boundary_gradient, std::uint32_t i) {
@@ -29,7 +31,8 @@ UPF_HD inline Vec3 wcsph_pressure_acceleration(const FluidView& f, const Real* d
   Vec3 a{};
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    a -= fluid_gradient.at(f, i, k) * (f.mass[j] * (pi + pressure[j] / (density[j] * density[j])));
+    a -= fluid_gradient.at(f, i, k) *
+         pressure_pair(f, i, j, pi, pressure[j] / (density[j] * density[j]));
   }
   const Real pb = mirrored_pressure_factor(f, PressureOverDensitySquared{pressure, density, 1}, i);
   return a + boundary_pressure_acceleration(f, boundary_gradient, pi, pb, i);

@@ -199,6 +199,12 @@ TEST(SplitWorld, ImplicitViscosityIsBitwiseTheOneRankRun) {
   }
 }
 
+// Two liquids of different density (density_contrast.h): ghosts carry their masses and materials.
+TEST(SplitWorld, DensityContrastIsBitwiseTheOneRankRun) {
+  for (const std::string solver : {"pcisph", "iisph"})
+    expect_same_as_one_rank(testing::oil_on_water_dam_break(solver, solver == "pcisph"), 60);
+}
+
 TEST(SplitWorld, RebalancingEveryStepOrNeverChangesNoBit) {
   expect_same_as_one_rank(small_dam_break(), 80, 1);
   expect_same_as_one_rank(small_dam_break(), 80, 0);

@@ -22,6 +22,21 @@ inline nlohmann::json load_sample_json(const std::string& name) {
   return nlohmann::json::parse(in);
 }
 
+// The dam break at 4 cm with its column split in two liquids: water below, oil (800) above, both
+// moved by `solver` (solvers/fluid/density_contrast.h); with the wall pressure where asked.
+inline nlohmann::json oil_on_water_dam_break(const std::string& solver, bool wall_pressure = false) {
+  auto doc = load_sample_json("dam_break.json");
+  doc["particle_spacing"] = 0.04;
+  nlohmann::json solver_json = {{"name", solver}};
+  if (wall_pressure) solver_json["wall_pressure"] = 1;
+  doc["materials"]["water"]["solver"] = solver_json;
+  doc["materials"]["oil"] = {
+      {"type", "liquid"}, {"density", 800}, {"viscosity", 0.001}, {"solver", solver_json}};
+  doc["fluid_blocks"] = {{{"material", "water"}, {"min", {0, 0, 0}}, {"max", {0.6, 0.4, 0.4}}},
+                         {{"material", "oil"}, {"min", {0, 0.4, 0}}, {"max", {0.6, 0.8, 0.4}}}};
+  return doc;
+}
+
 inline Registry builtin_registry() {
   Registry r;
   register_builtins(r);
@@ -45,10 +60,13 @@ struct TestWorld {
   TestWorld(const nlohmann::json& doc, int threads, Registry with) : registry(std::move(with)) {
     start(doc, threads);
   }
-  void start(const nlohmann::json& doc, int threads) {
+  // Built but not prepared: the test edits particles, then calls world->prepare().
+  struct Unprepared {};
+  TestWorld(const nlohmann::json& doc, int threads, Unprepared) { start(doc, threads, false); }
+  void start(const nlohmann::json& doc, int threads, bool prepare = true) {
     scene = read_scene(doc, registry, "test");
     world = build_world(scene, registry, threads);
-    world->prepare();
+    if (prepare) world->prepare();
   }
   // Steps until time t, landing on it with evenly split steps.
   void run_until(double t) {

@@ -55,6 +55,18 @@ TEST(Determinism, StateEquationSolversGiveBitwiseIdenticalPositions) {
   }
 }
 
+// Two liquids of different density (density_contrast.h): the number-density sums and PCISPH's
+// ratio-scaled correction, on every solver that carries them.
+TEST(Determinism, DensityContrastGivesBitwiseIdenticalPositions) {
+  for (const std::string solver : {"pcisph", "wcsph", "dfsph", "iisph"}) {
+    SCOPED_TRACE(solver);
+    const auto doc = testing::oil_on_water_dam_break(solver, solver == "pcisph");
+    const auto one = run_steps(doc, 1, 80);
+    expect_identical(one, run_steps(doc, 2, 80));
+    EXPECT_GT(testing::bitwise_differences(one, run_steps(doc, 1, 0), true), 1000u);
+  }
+}
+
 // Implicit viscosity (implicit_viscosity.h): gather-only stages and a conjugate gradient steered
 // by exact dot products, so the same iteration counts and bits for any thread count; with the
 // no-slip walls' extrapolated velocities (wall_velocity.h).
