@@ -40,7 +40,9 @@ namespace upf {
 
 // The pressure factors P of the boundary terms, one struct per form.
 // PCISPH: p_i / rho0_i^2.
+// kPerDensitySquared: the factor is a pressure over a density squared (mirrored_pressure_factor).
 struct PressureOverRestDensitySquared {
+  static constexpr bool kPerDensitySquared = true;
   const Real* pressure;
   const Real* rest_density;
   const MaterialId* material;
@@ -52,6 +54,7 @@ struct PressureOverRestDensitySquared {
 
 // WCSPH, IISPH and the default pair term: p_i / rho_i^2, scaled (SPH's symmetrised force: 1/2).
 struct PressureOverDensitySquared {
+  static constexpr bool kPerDensitySquared = true;
   const Real* pressure;
   const Real* density;
   Real scale;
@@ -62,8 +65,16 @@ struct PressureOverDensitySquared {
 
 // A per-particle array that already is the factor (DFSPH's K).
 struct FactorArray {
+  static constexpr bool kPerDensitySquared = true;
   const Real* factor;
   UPF_HD Real operator()(std::uint32_t i) const { return factor[i]; }
+};
+
+// The pressures themselves (the floor of boundary_hydrostatic_acceleration).
+struct PressureArray {
+  static constexpr bool kPerDensitySquared = false;
+  const Real* pressure;
+  UPF_HD Real operator()(std::uint32_t i) const { return pressure[i]; }
 };
 
 // Shepard average of `factor` over particle i and its fluid neighbours: P_b of the frozen
@@ -74,6 +85,20 @@ UPF_HD Real mirrored_pressure_factor(const FluidView& f, const Factor& factor, s
   const Vec3 xi = f.x[i];
   const Real w0 = f.kernel.value(Real(0));
   Real sum = w0 * factor(i), weight = w0;
+  if (Factor::kPerDensitySquared && f.density_contrast) {
+    // The factors are p / rho^2 in each neighbour's own density: average the pressures, in i's
+    // (rest densities standing for densities), or light liquid beside heavy would read the heavy
+    // liquid's pressure (rho0_light / rho0_heavy)^2 times too low.
+    const Real rho0 = f.rest_density[f.material[i]];
+    for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
+      const std::uint32_t j = f.fluid.indices[k];
+      const Real w = f.kernel.value(xi - f.x[j]);
+      const Real ratio = f.rest_density[f.material[j]] / rho0;
+      sum += w * factor(j) * (ratio * ratio);
+      weight += w;
+    }
+    return sum / weight;
+  }
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
     const Real w = f.kernel.value(xi - f.x[j]);
@@ -110,7 +135,7 @@ UPF_HD inline Vec3 boundary_hydrostatic_acceleration(const FluidView& f, const R
   if (!f.wall_pressure || f.boundary.offsets[i] == f.boundary.offsets[i + 1]) return Vec3{};
   const Vec3 xi = f.x[i];
   const Real rho0 = f.rest_density[f.material[i]];
-  const Real floor = -mirrored_pressure_factor(f, FactorArray{pressure}, i);
+  const Real floor = -mirrored_pressure_factor(f, PressureArray{pressure}, i);
   Vec3 a{};
   for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
     const std::uint32_t b = f.boundary.indices[k];

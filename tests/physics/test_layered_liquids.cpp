@@ -72,9 +72,10 @@ TEST(LayeredLiquids, IisphHoldsOilOnWater) {
 }
 
 // WCSPH keeps ringing at its acoustic mode, which the wall pressure reflects (as with one liquid:
-// test_hydrostatic_tank.cpp), 0.07 m/s RMS after 5 s: its pressure is averaged over 1 s.
+// test_hydrostatic_tank.cpp), 0.03 to 0.07 m/s RMS after 5 s: its pressure is averaged over the
+// last 2 s.
 TEST(LayeredLiquids, WcsphHoldsOilOnWater) {
-  expect_oil_on_water("wcsph", 1.0, 0.05);
+  expect_oil_on_water("wcsph", 2.0, 0.05);
 }
 
 // The ratio the scene reader allows at most, 10 (light 100 on water): PCISPH with delta scaled by
@@ -123,6 +124,37 @@ TEST(LayeredLiquids, ALightDropRises) {
 
 TEST(LayeredLiquids, AHeavyDropSinks) {
   expect_drop_moves_as_buoyancy_says(2000);
+}
+
+// Rayleigh-Taylor instability (linear theory: Chandrasekhar 1961, Hydrodynamic and Hydromagnetic
+// Stability, ch. X): water (1000) on a lighter liquid (500), A = 1/3, 0.2 m each, in a box 0.2 m
+// wide and 3 cm thick at 5 mm spacing (19,200 liquid particles), the interface displaced by
+// 1 cm cos(pi x / 0.2). From rest the mode grows as cosh(sigma t), sigma^2 = A g k tanh(k depth)
+// (7.15 /s); the rate is read when the amplitude has doubled (k eta = 0.3, before the nonlinear
+// slow-down), sigma_measured = acosh(eta / eta0) / t, and must be within 20 %.
+TEST(LayeredLiquids, RayleighTaylorGrowsAtTheLinearRate) {
+  const double heavy = 1000, light = 500, eta0 = 0.01;
+  testing::RayleighTaylorBox box("pcisph", heavy, light, eta0);
+  const double atwood = (heavy - light) / (heavy + light), k = 3.14159265358979 / box.width;
+  const double sigma = std::sqrt(atwood * 9.81 * k * std::tanh(k * box.depth));
+  const double start = box.amplitude();
+  ASSERT_NEAR(start, eta0, 0.1 * eta0) << "the lattice's share of the mode";
+  double measured = 0, t = 0;
+  while (t < 0.5) {
+    t += 0.01;
+    box.tw.run_until(t);
+    const double ratio = box.amplitude() / start;
+    if (ratio >= 2) {
+      measured = std::acosh(ratio) / t;
+      break;
+    }
+  }
+  std::printf("Rayleigh-Taylor: amplitude doubled at t = %.2f s; sigma %.3f /s, theory %.3f /s\n",
+              t, measured, sigma);
+  EXPECT_NEAR(measured, sigma, 0.2 * sigma) << "0 means the mode never doubled in 0.5 s";
+  testing::record_validation("Rayleigh-Taylor growth rate sigma (A = 1/3), amplitude doubled",
+                             "linear theory sqrt(A g k tanh(k h)) (Chandrasekhar 1961)",
+                             std::to_string(sigma), "within 20 %", measured, "1/s");
 }
 
 }  // namespace
