@@ -8,7 +8,9 @@ MaterialKind liquid_material_kind() {
       ParticleType::Liquid,
       "a fluid moved by an SPH-family solver (pcisph by default)",
       {
-          {"density", "kg/m^3", 1000, 1, 1e5, "rest density rho0; particle mass is rho0 s^3"},
+          {"density", "kg/m^3", 1000, 1, 1e5,
+           "rest density rho0; particle mass is rho0 s^3; liquids of different density share one "
+           "fluid solver, at ratios up to 10 (docs/multiphase.md)"},
           {"viscosity", "m^2/s", 1e-3, 0, 10,
            "kinematic viscosity nu of the shared Laplacian viscosity (Monaghan 2005); also "
            "damps the flow, so it is larger than water's 1e-6 at coarse resolution; it limits "

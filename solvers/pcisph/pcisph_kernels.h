@@ -32,27 +32,27 @@ UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* 
 }
 
 // fluid_density with density contrast, and the ratio that scales delta for particle i:
-//   r_i = sum_j (rho0_i / rho0_j) |grad W_ij|^2 / sum_j |grad W_ij|^2   (1 without neighbours).
+//   r_i = sum_j (rho0_i / rho0_j) W_ij / sum_j W_ij   (1 without neighbours).
 // delta is the inverse of the diagonal of the pressure-to-density map on a one-liquid lattice,
-// where the neighbours' share, sum_j |grad W_ij|^2, dominates it. With density contrast a
-// neighbour j moves by p_i / rho0_j, and the diagonal grows by r_i: a heavy particle among light
-// ones (r = 5.5 at a ratio of 10, half its neighbours light) over-corrected its error five-fold
-// and PCISPH diverged at the interface (docs/multiphase.md).
+// where the neighbours' share dominates it. With density contrast a neighbour j moves by
+// p_i / rho0_j, and the diagonal grows by about r_i (exactly, with |grad W_ij|^2 for the weights;
+// W_ij, which the density sum has at hand, held the same tanks at rest): a heavy particle among
+// light ones (r = 5.5 at a ratio of 10, half its neighbours light) over-corrected its error
+// five-fold and PCISPH diverged at the interface (docs/multiphase.md).
 UPF_HD inline Real contrast_density(const FluidView& f, const Vec3* xf, std::uint32_t i,
                                     Real& ratio) {
   const Vec3 xi = xf[i];
   const Real mi = f.mass[i];
   const Real rho0 = f.rest_density[f.material[i]];
-  Real rho = mi * f.kernel.value(Real(0)), weighted = 0, plain = 0;
+  Real sum = 0, weighted = 0;
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    Vec3 g;
-    rho += mi * f.kernel.value_and_gradient(xi - xf[j], g);
-    const Real g2 = squared_norm(g);
-    plain += g2;
-    weighted += g2 * (rho0 / f.rest_density[f.material[j]]);
+    const Real w = f.kernel.value(xi - xf[j]);
+    sum += w;
+    weighted += w * (rho0 / f.rest_density[f.material[j]]);
   }
-  ratio = plain > Real(0) ? weighted / plain : Real(1);
+  ratio = sum > Real(0) ? weighted / sum : Real(1);
+  Real rho = mi * (f.kernel.value(Real(0)) + sum);
   for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
     const std::uint32_t b = f.boundary.indices[k];
     rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - xf[b]);
