@@ -34,6 +34,10 @@ int print_text(const Registry& registry) {
   for (const auto& s : registry.solvers()) {
     std::printf("  %s (for %s materials)\n    %s\n    reference: %s\n", s.name.c_str(),
                 std::string(to_string(s.type)).c_str(), s.summary.c_str(), s.reference.c_str());
+    if (s.type == ParticleType::Liquid)
+      std::printf("    liquids of different density: %s\n",
+                  s.density_contrast ? "yes, up to a ratio of 10 (docs/multiphase.md)"
+                                     : "no (a scene that mixes them under it is refused)");
     print_params(s.params);
   }
   std::printf("\nSurface tension models (scene key materials/NAME/surface_tension_model):\n");

@@ -33,4 +33,16 @@ TEST_F(Cli, DifferentDensitiesUnderSphAreRefused) {
   expect_rejected(doc, {"/solver", "solver 'sph'", "'oil' (800 kg/m^3)", "pcisph"});
 }
 
+TEST_F(Cli, InfoSaysWhichSolversHoldLiquidsOfDifferentDensity) {
+  const Result r = run_upf("info");
+  EXPECT_EQ(r.code, 0);
+  const auto pcisph = r.output.find("  pcisph (for liquid materials)");
+  const auto sph = r.output.find("  sph (for liquid materials)");
+  ASSERT_NE(pcisph, std::string::npos) << r.output;
+  ASSERT_NE(sph, std::string::npos) << r.output;
+  const std::string line = "liquids of different density: ";
+  EXPECT_EQ(r.output.compare(r.output.find(line, pcisph) + line.size(), 3, "yes"), 0);
+  EXPECT_EQ(r.output.compare(r.output.find(line, sph) + line.size(), 2, "no"), 0);
+}
+
 }  // namespace
