@@ -22,6 +22,16 @@ std::string density_contrast_solvers(const Registry& registry) {
 
 }  // namespace
 
+bool liquids_differ_in_density(const SceneDescription& scene) {
+  const Material* first = nullptr;
+  for (const Material& m : scene.materials) {
+    if (m.type != ParticleType::Liquid) continue;
+    if (!first) first = &m;
+    if (m.param("density") != first->param("density")) return true;
+  }
+  return false;
+}
+
 void check_liquid_mix_keys(JsonInput& in, const Registry& registry, const SceneDescription& scene) {
   for (std::size_t a = 0; a < scene.materials.size(); ++a)
     for (std::size_t b = 0; b < a; ++b) {

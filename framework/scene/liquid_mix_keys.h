@@ -12,6 +12,9 @@ namespace upf {
 // Pajarola 2008) is the paper's up to 10, and so are upf's tests.
 inline constexpr double kMaxLiquidDensityRatio = 10;
 
+// Whether two of the scene's liquid materials differ in rest density.
+bool liquids_differ_in_density(const SceneDescription& scene);
+
 // A problem for each of: two liquids naming different solvers (each pressure solve moves its own
 // particles and would treat the other's as unpressured mass), liquids of different rest density
 // under a solver without the density-contrast forms (SolverInfo::density_contrast), and a density

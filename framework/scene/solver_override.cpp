@@ -1,6 +1,7 @@
 #include "framework/scene/solver_override.h"
 
 #include "framework/scene/json_input.h"
+#include "framework/scene/liquid_mix_keys.h"
 
 namespace upf {
 
@@ -25,16 +26,6 @@ std::string unknown_solver_message(const std::string& name, const Registry& regi
 }
 
 // Two liquids of different rest density: only solvers with the density-contrast forms hold them.
-bool liquids_differ_in_density(const SceneDescription& scene) {
-  const Material* first = nullptr;
-  for (const auto& m : scene.materials) {
-    if (m.type != ParticleType::Liquid) continue;
-    if (first && m.param("density") != first->param("density")) return true;
-    if (!first) first = &m;
-  }
-  return false;
-}
-
 bool can_move(const SolverInfo& s, const SceneDescription& scene) {
   if (!has_material_of_type(scene, s.type)) return false;
   return s.type != ParticleType::Liquid || s.density_contrast || !liquids_differ_in_density(scene);
@@ -52,9 +43,10 @@ SceneDescription with_solver(const SceneDescription& scene, const Registry& regi
                                 scene.name + "' has no " + type + " material");
   }
   if (!can_move(*info, scene))
-    throw InputError(where, "solver '" + solver + "' sums densities over neighbours' masses and "
-                            "cannot hold the liquids of scene '" + scene.name +
-                                "', whose rest densities differ (docs/multiphase.md)");
+    throw InputError(where, "solver '" + solver +
+                                "' sums densities over neighbours' masses and "
+                                "cannot hold the liquids of scene '" +
+                                scene.name + "', whose rest densities differ (docs/multiphase.md)");
   // Materials sharing a solver share one instance and so one parameter set: the scene's, when
   // one of its materials already names this solver.
   ParamValues params(info->params);

@@ -85,24 +85,20 @@ UPF_HD Real mirrored_pressure_factor(const FluidView& f, const Factor& factor, s
   const Vec3 xi = f.x[i];
   const Real w0 = f.kernel.value(Real(0));
   Real sum = w0 * factor(i), weight = w0;
-  if (Factor::kPerDensitySquared && f.density_contrast) {
-    // The factors are p / rho^2 in each neighbour's own density: average the pressures, in i's
-    // (rest densities standing for densities), or light liquid beside heavy would read the heavy
-    // liquid's pressure (rho0_light / rho0_heavy)^2 times too low.
-    const Real rho0 = f.rest_density[f.material[i]];
-    for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-      const std::uint32_t j = f.fluid.indices[k];
-      const Real w = f.kernel.value(xi - f.x[j]);
-      const Real ratio = f.rest_density[f.material[j]] / rho0;
-      sum += w * factor(j) * (ratio * ratio);
-      weight += w;
-    }
-    return sum / weight;
-  }
+  // With density contrast the factors p / rho^2 are each in the neighbour's own density: average
+  // the pressures, in i's (rest densities standing for densities), or light liquid beside heavy
+  // would read the heavy liquid's pressure (rho0_light / rho0_heavy)^2 times too low.
+  const bool rescale = Factor::kPerDensitySquared && f.density_contrast;
+  const Real rho0 = rescale ? f.rest_density[f.material[i]] : Real(1);
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
     const Real w = f.kernel.value(xi - f.x[j]);
-    sum += w * factor(j);
+    Real pj = factor(j);
+    if (rescale) {
+      const Real ratio = f.rest_density[f.material[j]] / rho0;
+      pj *= ratio * ratio;
+    }
+    sum += w * pj;
     weight += w;
   }
   return sum / weight;

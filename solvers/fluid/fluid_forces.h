@@ -19,15 +19,24 @@ namespace upf {
 
 // Density of fluid particle i, with every position taken from `xf` (current or predicted; a
 // moving boundary must be predicted too, or an approaching body is seen a step late and runs
-// fluid over).
-UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32_t i) {
+// fluid over). With `contrast_ratio` not null (density contrast), also PCISPH's
+//   r_i = sum_j (rho0_i / rho0_j) W_ij / sum_j W_ij   (1 without neighbours; pcisph_kernels.h).
+UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32_t i,
+                                 Real* contrast_ratio = nullptr) {
   const Vec3 xi = xf[i];
+  const Real rho0 = f.rest_density[f.material[i]];
   Real rho = f.mass[i] * f.kernel.value(Real(0));
+  Real kernel_sum = 0, weighted = 0;
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    rho += density_weight(f, i, j) * f.kernel.value(xi - xf[j]);
+    const Real w = f.kernel.value(xi - xf[j]);
+    rho += density_weight(f, i, j) * w;
+    if (contrast_ratio) {
+      kernel_sum += w;
+      weighted += w * (rho0 / f.rest_density[f.material[j]]);
+    }
   }
-  const Real rho0 = f.rest_density[f.material[i]];
+  if (contrast_ratio) *contrast_ratio = kernel_sum > Real(0) ? weighted / kernel_sum : Real(1);
   for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
     const std::uint32_t b = f.boundary.indices[k];
     rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - xf[b]);

@@ -21,11 +21,12 @@ void FluidMaterialTable::load(const World& world, const std::vector<MaterialId>&
   }
   // Every liquid's, not only the solver's: the fluid lists hold every liquid particle.
   density_contrast = false;
-  for (std::size_t m = 0; m < n; ++m)
-    for (std::size_t k = 0; k < m; ++k)
-      if (mats[m].type == ParticleType::Liquid && mats[k].type == ParticleType::Liquid &&
-          rest_density[m] != rest_density[k])
-        density_contrast = true;
+  Real first = 0;  // the first liquid's rest density (>= 1 by its range)
+  for (std::size_t m = 0; m < n; ++m) {
+    if (mats[m].type != ParticleType::Liquid) continue;
+    if (first == 0) first = rest_density[m];
+    density_contrast = density_contrast || rest_density[m] != first;
+  }
   implicit_viscosity = false;
   viscosity_tolerance = 1;
   viscosity_max_iterations = 1;

@@ -31,35 +31,6 @@ UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* 
   return a + boundary_pressure_acceleration(f, boundary_gradient, pi, pb, i);
 }
 
-// fluid_density with density contrast, and the ratio that scales delta for particle i:
-//   r_i = sum_j (rho0_i / rho0_j) W_ij / sum_j W_ij   (1 without neighbours).
-// delta is the inverse of the diagonal of the pressure-to-density map on a one-liquid lattice,
-// where the neighbours' share dominates it. With density contrast a neighbour j moves by
-// p_i / rho0_j, and the diagonal grows by about r_i (exactly, with |grad W_ij|^2 for the weights;
-// W_ij, which the density sum has at hand, held the same tanks at rest): a heavy particle among
-// light ones (r = 5.5 at a ratio of 10, half its neighbours light) over-corrected its error
-// five-fold and PCISPH diverged at the interface (docs/multiphase.md).
-UPF_HD inline Real contrast_density(const FluidView& f, const Vec3* xf, std::uint32_t i,
-                                    Real& ratio) {
-  const Vec3 xi = xf[i];
-  const Real mi = f.mass[i];
-  const Real rho0 = f.rest_density[f.material[i]];
-  Real sum = 0, weighted = 0;
-  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-    const std::uint32_t j = f.fluid.indices[k];
-    const Real w = f.kernel.value(xi - xf[j]);
-    sum += w;
-    weighted += w * (rho0 / f.rest_density[f.material[j]]);
-  }
-  ratio = sum > Real(0) ? weighted / sum : Real(1);
-  Real rho = mi * (f.kernel.value(Real(0)) + sum);
-  for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
-    const std::uint32_t b = f.boundary.indices[k];
-    rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - xf[b]);
-  }
-  return rho;
-}
-
 // Step 1 of the loop: v* = v + (a_other + a_p) dt, x* = x + v* dt.
 struct PcisphPredictStage {
   FluidView f;
@@ -74,6 +45,12 @@ struct PcisphPredictStage {
 };
 
 // Steps 2 and 3: rho* at the predicted positions, p += delta (rho* - rho0), clamped at 0.
+// With density contrast delta / r_i (fluid_density's ratio): delta is the inverse of the diagonal
+// of the pressure-to-density map on a one-liquid lattice, where the neighbours' share dominates.
+// A neighbour j moves by p_i / rho0_j, so that diagonal grows by about r_i (exactly, with
+// |grad W_ij|^2 for the weights; W_ij, which the density sum has at hand, held the same tanks): a
+// heavy particle among light ones (r = 5.5 at a ratio of 10, half its neighbours light)
+// over-corrected its error five-fold and PCISPH diverged at the interface (docs/multiphase.md).
 struct PcisphCorrectPressureStage {
   FluidView f;
   const Vec3* x_star;
@@ -82,15 +59,9 @@ struct PcisphCorrectPressureStage {
   Real* pressure;
   UPF_HD void operator()(std::uint32_t i) const {
     const Real rho0 = f.rest_density[f.material[i]];
-    Real correction = delta;
-    if (f.density_contrast) {
-      Real ratio;
-      rho_star[i] = contrast_density(f, x_star, i, ratio);
-      correction = delta / ratio;
-    } else {
-      rho_star[i] = fluid_density(f, x_star, i);
-    }
-    const Real p = pressure[i] + correction * (rho_star[i] - rho0);
+    Real ratio = 1;  // delta / 1 is delta: one liquid runs bit for bit as without contrast
+    rho_star[i] = fluid_density(f, x_star, i, f.density_contrast ? &ratio : nullptr);
+    const Real p = pressure[i] + delta / ratio * (rho_star[i] - rho0);
     pressure[i] = p > 0 ? p : Real(0);
   }
 };

@@ -146,9 +146,7 @@ inline HydrostaticTankResult run_hydrostatic_tank(
       if (p.type[i] != ParticleType::Liquid) continue;
       const Vec3& x = p.position[i];
       if (std::abs(double(x.y) - y) > 0.5 * h) continue;
-      if (x.x < 2 * support || x.x > kTankWidth - 2 * support || x.z < 2 * support ||
-          x.z > kTankWidth - 2 * support)
-        continue;
+      if (!in_interior_columns(x, kTankWidth, 2 * support)) continue;
       sum += pressure_sum[p.id[i]] / samples;
       depth_sum += r.surface - double(x.y);
       ++slab.particles;
@@ -176,9 +174,7 @@ inline HydrostaticTankResult run_hydrostatic_tank(
     LayerPressure& layer = r.layers[rank / per_layer];
     layer.layer = int(rank / per_layer);
     const Vec3& x = p.position[i];
-    if (x.x < 2 * support || x.x > kTankWidth - 2 * support || x.z < 2 * support ||
-        x.z > kTankWidth - 2 * support)
-      continue;
+    if (!in_interior_columns(x, kTankWidth, 2 * support)) continue;
     layer.measured += pressure_sum[p.id[i]] / samples;
     layer.height += double(x.y);
     layer.density_error =

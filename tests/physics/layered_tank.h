@@ -22,16 +22,11 @@ inline nlohmann::json layered_tank(const std::string& solver, double heavy, doub
                                    double spacing = 0.02) {
   // The wall pressure of boundary_pressure.h: without it the liquid sinks along the side walls and
   // rises in the middle, and that convection carried water 5.8 cm up the walls into the oil in 5 s.
-  nlohmann::json solver_json = {{"name", solver}, {"wall_pressure", 1}};
-  if (solver != "wcsph") solver_json["eta"] = 0.005;
   return {
       {"name", "layered_tank"},
       {"gravity", {0, -9.81, 0}},
       {"particle_spacing", spacing},
-      {"materials",
-       {{"heavy", {{"type", "liquid"}, {"density", heavy}, {"solver", solver_json}}},
-        {"light", {{"type", "liquid"}, {"density", light}, {"solver", solver_json}}},
-        {"walls", {{"type", "frozen"}}}}},
+      {"materials", two_liquid_materials(solver, "heavy", heavy, "light", light, true)},
       {"containers",
        {{{"material", "walls"},
          {"min", {0, 0, 0}},
@@ -128,9 +123,7 @@ inline LayeredTankResult run_layered_tank(const nlohmann::json& doc, int threads
       if (p.type[i] != ParticleType::Liquid) continue;
       const Vec3& x = p.position[i];
       if (std::abs(double(x.y) - y) > 0.5 * s) continue;
-      if (x.x < 2 * support || x.x > kLayerTankWidth - 2 * support || x.z < 2 * support ||
-          x.z > kLayerTankWidth - 2 * support)
-        continue;
+      if (!in_interior_columns(x, kLayerTankWidth, 2 * support)) continue;
       sum += pressure_sum[p.id[i]] / samples;
       expected += hydrostatic(double(x.y));
       ++slab.particles;
@@ -157,16 +150,11 @@ struct DropInWater {
   MaterialId drop = 0;
 
   static nlohmann::json scene(const std::string& solver, double drop_density) {
-    nlohmann::json solver_json = {{"name", solver}, {"wall_pressure", 1}};
-    if (solver != "wcsph") solver_json["eta"] = 0.005;
     return {
         {"name", "drop_in_water"},
         {"gravity", {0, -9.81, 0}},
         {"particle_spacing", 0.02},
-        {"materials",
-         {{"water", {{"type", "liquid"}, {"density", 1000}, {"solver", solver_json}}},
-          {"drop", {{"type", "liquid"}, {"density", drop_density}, {"solver", solver_json}}},
-          {"walls", {{"type", "frozen"}}}}},
+        {"materials", two_liquid_materials(solver, "water", 1000, "drop", drop_density, true)},
         {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {0.3, 0.6, 0.3}}}}},
         {"fluid_blocks", {{{"material", "water"}, {"min", {0, 0, 0}}, {"max", {0.3, 0.45, 0.3}}}}},
         {"time", {{"end", 1.0}, {"dt_max", 0.002}}},
@@ -224,21 +212,12 @@ struct RayleighTaylorBox {
     // particle beside a wall as if it stood in liquid of its own density, and in a slab a few
     // spacings thick every particle stands beside the front and back walls; with it the mode
     // grew at 0.7 sigma.
-    nlohmann::json solver_json = {{"name", solver}};
-    if (solver != "wcsph") solver_json["eta"] = 0.005;
     return {
         {"name", "rayleigh_taylor"},
         {"gravity", {0, -9.81, 0}},
         {"particle_spacing", spacing},
         {"materials",
-         {{"heavy",
-           {{"type", "liquid"}, {"density", heavy}, {"viscosity", 0}, {"solver", solver_json}}},
-          {"light",
-           {{"type", "liquid"},
-            {"density", light_density},
-            {"viscosity", 0},
-            {"solver", solver_json}}},
-          {"walls", {{"type", "frozen"}}}}},
+         two_liquid_materials(solver, "heavy", heavy, "light", light_density, false, 0)},
         {"containers",
          {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {width, 2.5 * depth, thickness}}}}},
         {"fluid_blocks",

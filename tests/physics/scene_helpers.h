@@ -22,9 +22,36 @@ inline nlohmann::json load_sample_json(const std::string& name) {
   return nlohmann::json::parse(in);
 }
 
+// Whether x stands at least `margin` inside a square tank's side walls (x and z in [0, width]): the
+// interior columns where a tank's pressure is read away from the walls' kernel deficit.
+inline bool in_interior_columns(const Vec3& x, double width, double margin) {
+  return x.x >= margin && x.x <= width - margin && x.z >= margin && x.z <= width - margin;
+}
+
+// Two liquids moved by one `solver` (both with its parameters), and frozen "walls": the materials
+// of the multi-liquid test scenes. PCISPH, DFSPH and IISPH at eta 0.5 %.
+inline nlohmann::json two_liquid_materials(const std::string& solver, const std::string& first,
+                                           double first_density, const std::string& second,
+                                           double second_density, bool wall_pressure,
+                                           double viscosity = 1e-3) {
+  nlohmann::json solver_json = {{"name", solver}};
+  if (wall_pressure) solver_json["wall_pressure"] = 1;
+  if (solver != "wcsph") solver_json["eta"] = 0.005;
+  auto liquid = [&](double density) {
+    return nlohmann::json{{"type", "liquid"},
+                          {"density", density},
+                          {"viscosity", viscosity},
+                          {"solver", solver_json}};
+  };
+  return {{first, liquid(first_density)},
+          {second, liquid(second_density)},
+          {"walls", {{"type", "frozen"}}}};
+}
+
 // The dam break at 4 cm with its column split in two liquids: water below, oil (800) above, both
 // moved by `solver` (solvers/fluid/density_contrast.h); with the wall pressure where asked.
-inline nlohmann::json oil_on_water_dam_break(const std::string& solver, bool wall_pressure = false) {
+inline nlohmann::json oil_on_water_dam_break(const std::string& solver,
+                                             bool wall_pressure = false) {
   auto doc = load_sample_json("dam_break.json");
   doc["particle_spacing"] = 0.04;
   nlohmann::json solver_json = {{"name", solver}};
