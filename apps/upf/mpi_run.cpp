@@ -25,7 +25,7 @@ void MpiSession::abort(int code) const {
 std::function<std::unique_ptr<ParticleDomain>(const World&)> mpi_domain_maker(int rebalance_every) {
   return [rebalance_every](const World& world) -> std::unique_ptr<ParticleDomain> {
     return std::make_unique<MpiDomain>(MPI_COMM_WORLD, world.settings().support_radius(),
-                                       rebalance_every);
+                                       rebalance_every, world.settings().periodic);
   };
 }
 

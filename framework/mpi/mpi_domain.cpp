@@ -9,6 +9,7 @@
 #include "framework/core/errors.h"
 #include "framework/particles/particles.h"
 #include "framework/world/coupling.h"
+#include "framework/world/periodic_domain.h"
 
 namespace upf {
 
@@ -40,12 +41,13 @@ int byte_count(std::size_t bytes) {
 
 }  // namespace
 
-MpiDomain::MpiDomain(MPI_Comm comm, Real reach, int rebalance_every)
-    : comm_(comm), reach_(reach), rebalance_every_(rebalance_every) {
+MpiDomain::MpiDomain(MPI_Comm comm, Real reach, int rebalance_every, const PeriodicBox& periodic)
+    : comm_(comm), reach_(reach), rebalance_every_(rebalance_every), periodic_(periodic) {
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &ranks_);
   rcb_ = std::make_unique<ZoltanRcb>(comm_);
   ghost_sends_.resize(std::size_t(ranks_));
+  ghost_shift_sends_.resize(std::size_t(ranks_));
   ghost_receives_.assign(std::size_t(ranks_), 0);
   send_scratch_.resize(std::size_t(ranks_));
 }
@@ -112,6 +114,10 @@ void MpiDomain::distribute(Particles& particles, CouplingArrays& coupling) {
 void MpiDomain::migrate() {
   Particles& p = *particles_;
   const std::size_t owned = p.owned_size();
+  // What left the periodic box comes back through the opposite face (frozen walls stay put).
+  if (periodic_.any())
+    for (std::size_t i = 0; i < owned; ++i)
+      if (p.type[i] != ParticleType::Frozen) periodic_.wrap(p.position[i]);
   if (!balanced_) {
     rcb_->balance(p.position.data(), owned);
     balanced_ = true;
@@ -178,13 +184,24 @@ void MpiDomain::make_ghosts() {
   const Real reach = reach_ * Real(1.0001);
   std::vector<int> touching;
   for (auto& list : ghost_sends_) list.clear();
+  for (auto& list : ghost_shift_sends_) list.clear();
+  const Vec3 r{reach, reach, reach};
+  // Every rank whose domain holds a place within reach of `at` gets particle i, shifted.
+  auto send_to_ranks_near = [&](std::size_t i, const Vec3& at, const Vec3& shift, bool self) {
+    rcb_->ranks_touching(at - r, at + r, touching);
+    for (int to : touching) {
+      if (to == rank_ && !self) continue;
+      ghost_sends_[std::size_t(to)].push_back(std::uint32_t(i));
+      if (periodic_.any()) ghost_shift_sends_[std::size_t(to)].push_back(shift);
+    }
+  };
   for (std::size_t i = 0; i < owned; ++i) {
     const Vec3& x = p.position[i];
-    if (inside_box(x, reach, lo, hi)) continue;  // no other domain within reach
-    const Vec3 r{reach, reach, reach};
-    rcb_->ranks_touching(x - r, x + r, touching);
-    for (int to : touching)
-      if (to != rank_) ghost_sends_[std::size_t(to)].push_back(std::uint32_t(i));
+    // No other domain within reach: no ghost unless a periodic face is.
+    if (!inside_box(x, reach, lo, hi)) send_to_ranks_near(i, x, Vec3{}, false);
+    periodic_.for_each_image_shift(x, reach, [&](const Vec3& shift) {
+      send_to_ranks_near(i, PeriodicBox::shifted(x, shift), shift, true);
+    });
   }
   std::vector<int> counts;
   const std::vector<std::uint8_t>& arrived = send_particles(ghost_sends_, counts);
@@ -192,6 +209,21 @@ void MpiDomain::make_ghosts() {
   const std::size_t ghosts =
       std::accumulate(ghost_receives_.begin(), ghost_receives_.end(), std::size_t(0));
   p.set_ghost_count(ghosts);
+  ghost_shifts_.clear();
+  if (periodic_.any()) {
+    // The shifts follow the ghosts, in the same rank order.
+    for (int to = 0; to < ranks_; ++to) {
+      const auto& shifts = ghost_shift_sends_[std::size_t(to)];
+      auto& out = send_scratch_[std::size_t(to)];
+      out.resize(shifts.size() * sizeof(Vec3));
+      if (!shifts.empty()) std::memcpy(out.data(), shifts.data(), out.size());
+    }
+    const std::vector<std::uint8_t>& received = all_to_all(send_scratch_, counts);
+    ghost_shifts_.resize(ghosts);
+    if (ghosts)
+      std::memcpy(static_cast<void*>(ghost_shifts_.data()), received.data(), ghosts * sizeof(Vec3));
+    shift_ghosts();
+  }
   traffic_.owned = owned;
   traffic_.ghosts = ghosts;
   traffic_.halo_bytes = 0;
@@ -222,8 +254,12 @@ void MpiDomain::pack_ghosts(const std::vector<std::uint32_t>& indices,
   }
 }
 
+void MpiDomain::shift_ghosts() const {
+  shift_ghost_positions(*particles_, ghost_shifts_);
+}
+
 void MpiDomain::refresh_ghosts() const {
-  if (!particles_ || ranks_ == 1) return;
+  if (!particles_ || (ranks_ == 1 && !periodic_.any())) return;
   Particles& p = *particles_;
   const std::vector<std::vector<Vec3>*> coupling = carried_coupling();
   for (int r = 0; r < ranks_; ++r)
@@ -244,6 +280,7 @@ void MpiDomain::refresh_ghosts() const {
     first += count;
     traffic_.halo_bytes += send_scratch_[std::size_t(r)].size();
   }
+  shift_ghosts();
   ++traffic_.halo_refreshes;
 }
 
@@ -251,6 +288,8 @@ void MpiDomain::drop_ghosts() {
   particles_->truncate(particles_->owned_size());
   particles_->set_ghost_count(0);
   for (auto& list : ghost_sends_) list.clear();
+  for (auto& list : ghost_shift_sends_) list.clear();
+  ghost_shifts_.clear();
   std::fill(ghost_receives_.begin(), ghost_receives_.end(), 0);
 }
 

@@ -17,14 +17,17 @@
 #include "framework/core/real.h"
 #include "framework/mpi/zoltan_rcb.h"
 #include "framework/world/particle_domain.h"
+#include "framework/world/periodic_box.h"
 
 namespace upf {
 
 class MpiDomain final : public ParticleDomain {
  public:
   // `reach`: how far from a domain its ghosts reach (the support radius); new cuts every
-  // `rebalance_every` steps (0: only the first).
-  MpiDomain(MPI_Comm comm, Real reach, int rebalance_every);
+  // `rebalance_every` steps (0: only the first). Along `periodic`'s axes the world repeats:
+  // the ghosts then include the periodic images (periodic_box.h), shifted by the period, sent
+  // to whichever rank (this one too) holds the place they land on.
+  MpiDomain(MPI_Comm comm, Real reach, int rebalance_every, const PeriodicBox& periodic = {});
 
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
@@ -61,6 +64,8 @@ class MpiDomain final : public ParticleDomain {
   // Owned particles whose position lies in another rank's domain move there.
   void migrate();
   void make_ghosts();
+  // Ghost k's position += ghost_shifts_[k] (the periodic images; zero for the others).
+  void shift_ghosts() const;
   // The coupling arrays ghosts carry: the active ones, sized for this step.
   std::vector<std::vector<Vec3>*> carried_coupling() const;
   // Packs the listed particles' arrays and their values in `coupling`.
@@ -76,7 +81,10 @@ class MpiDomain final : public ParticleDomain {
   std::unique_ptr<ZoltanRcb> rcb_;
   Particles* particles_ = nullptr;
   CouplingArrays* coupling_ = nullptr;
+  PeriodicBox periodic_;
   std::vector<std::vector<std::uint32_t>> ghost_sends_;  // per rank: owned indices it ghosts
+  std::vector<std::vector<Vec3>> ghost_shift_sends_;     // per rank: their shifts (periodic)
+  std::vector<Vec3> ghost_shifts_;                       // per ghost held: its shift (periodic)
   std::vector<std::size_t> ghost_receives_;              // per rank: ghosts it sent here
   std::vector<std::vector<std::uint32_t>> departed_;     // per rank: ids migrated there
   mutable std::vector<std::vector<std::uint8_t>> send_scratch_;

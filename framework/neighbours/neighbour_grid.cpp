@@ -68,12 +68,23 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
 
   // Start from id order, then a stable sort by key gives (key, id) order.
   const ParticleId id_bound = particles.id_bound();
-  sort_scratch_.assign(id_bound, std::numeric_limits<std::uint32_t>::max());
-  for (std::size_t i = 0; i < n; ++i) sort_scratch_[particles.id[i]] = std::uint32_t(i);
-  sorted_.clear();
-  sorted_.reserve(n);
-  for (std::uint32_t slot : sort_scratch_)
-    if (slot != std::numeric_limits<std::uint32_t>::max()) sorted_.push_back(slot);
+  if (particles.ghost_count() == 0) {
+    sort_scratch_.assign(id_bound, std::numeric_limits<std::uint32_t>::max());
+    for (std::size_t i = 0; i < n; ++i) sort_scratch_[particles.id[i]] = std::uint32_t(i);
+    sorted_.clear();
+    sorted_.reserve(n);
+    for (std::uint32_t slot : sort_scratch_)
+      if (slot != std::numeric_limits<std::uint32_t>::max()) sorted_.push_back(slot);
+  } else {
+    // Ghosts may repeat ids (a periodic image has its particle's id, in another cell): a
+    // counting sort by id instead, stable in the index.
+    sort_scratch_.assign(std::size_t(id_bound) + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) ++sort_scratch_[particles.id[i] + 1];
+    for (std::size_t d = 1; d < sort_scratch_.size(); ++d) sort_scratch_[d] += sort_scratch_[d - 1];
+    sorted_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      sorted_[sort_scratch_[particles.id[i]]++] = std::uint32_t(i);
+  }
   sort_by_key(n);
 
   cell_keys_.clear();

@@ -91,6 +91,19 @@ FieldHandle<Vec3> Particles::declare_scratch_vector(const std::string& name) {
   return h;
 }
 
+FieldHandle<Vec3> Particles::declare_position_vector(const std::string& name) {
+  FieldHandle<Vec3> h = declare_vector(name);
+  vectors_.find(name)->second.position = true;
+  return h;
+}
+
+std::vector<std::vector<Vec3>*> Particles::position_arrays() {
+  std::vector<std::vector<Vec3>*> arrays = {&position};
+  for (auto& [name, f] : vectors_)
+    if (f.position) arrays.push_back(&f.values);
+  return arrays;
+}
+
 namespace {
 template <class T>
 std::string declared_names(const std::map<std::string, Field<T>>& fields) {

@@ -33,6 +33,9 @@ struct Field {
   // Rewritten every step before anything reads it (a solver's per-step arrays that neighbours
   // read): ghosts carry it, checkpoints do not, and a device pipeline may keep its own copy.
   bool scratch = false;
+  // Holds positions (a predicted position): a periodic image holds it shifted by its period,
+  // as it holds `position` (periodic_box.h).
+  bool position = false;
 };
 
 class Particles {
@@ -86,6 +89,10 @@ class Particles {
   // A per-step field (Field::scratch), zero-initialised and never exported.
   FieldHandle<Real> declare_scratch_scalar(const std::string& name);
   FieldHandle<Vec3> declare_scratch_vector(const std::string& name);
+  // A vector field of positions (Field::position): PCISPH's and PBF's predicted positions.
+  FieldHandle<Vec3> declare_position_vector(const std::string& name);
+  // `position` and every field of positions: what a periodic image shifts.
+  std::vector<std::vector<Vec3>*> position_arrays();
   // A field someone else declared, for `who` (a solver or system name, for the error).
   FieldHandle<Real> scalar(const std::string& name, const std::string& who);
   FieldHandle<Vec3> vector(const std::string& name, const std::string& who);

@@ -8,14 +8,20 @@
 namespace upf {
 
 void add_container_walls(Particles& particles, const Box& box, Real spacing, int layers,
-                         MaterialId material) {
+                         MaterialId material, const std::array<bool, 3>& open) {
   // The lattice is stretched slightly per axis so that the walls sit exactly on the box faces.
   const Lattice n = wall_lattice_size(box, spacing);
   Eigen::Vector3d step;
   for (int a = 0; a < 3; ++a) step[a] = (box.max[a] - box.min[a]) / double(n[a]);
-  for (std::int64_t k = -layers; k < n[2] + layers; ++k)
-    for (std::int64_t j = -layers; j < n[1] + layers; ++j)
-      for (std::int64_t i = -layers; i < n[0] + layers; ++i) {
+  // Along an open (periodic) axis the walls stop at the box: their images continue them.
+  std::int64_t from[3], to[3];
+  for (int a = 0; a < 3; ++a) {
+    from[a] = open[std::size_t(a)] ? 0 : -layers;
+    to[a] = open[std::size_t(a)] ? n[a] : n[a] + layers;
+  }
+  for (std::int64_t k = from[2]; k < to[2]; ++k)
+    for (std::int64_t j = from[1]; j < to[1]; ++j)
+      for (std::int64_t i = from[0]; i < to[0]; ++i) {
         const bool inside = i >= 0 && i < n[0] && j >= 0 && j < n[1] && k >= 0 && k < n[2];
         if (inside) continue;
         const Eigen::Vector3d x =
@@ -51,7 +57,8 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
   p.reserve(std::size_t(scene.estimated_particles()));
   for (const auto& c : scene.containers) {
     const std::size_t first = p.size();
-    add_container_walls(p, c.box, h, c.layers, *world->materials().find(c.material));
+    add_container_walls(p, c.box, h, c.layers, *world->materials().find(c.material),
+                        scene.world.periodic.periodic);
     world->add_container(
         {to_vec3(c.box.min), to_vec3(c.box.max), *world->materials().find(c.material)});
     // Lattice walls have a known volume per particle: the (slightly stretched) lattice cell.

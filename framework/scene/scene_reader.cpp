@@ -11,6 +11,7 @@
 #include "framework/core/file_name.h"
 #include "framework/scene/json_input.h"
 #include "framework/scene/liquid_mix_keys.h"
+#include "framework/scene/periodic_keys.h"
 #include "framework/scene/surface_tension_keys.h"
 #include "framework/scene/viscosity_keys.h"
 #include "framework/scene/world_setting_specs.h"
@@ -24,9 +25,9 @@ using nlohmann::json;
 // "render" belongs to the pictures (render/): a program that registers its section checks it,
 // others (tests, embedders) accept it unread, so one scene file serves them all.
 const std::vector<std::string> kTopKeys = {
-    "name",         "description", "gravity", "particle_spacing", "materials", "containers",
-    "fluid_blocks", "time",        "output",  "probes",           "stability", "neighbours",
-    "render",       "device"};
+    "name",       "description",  "gravity", "particle_spacing", "materials",
+    "containers", "fluid_blocks", "time",    "output",           "probes",
+    "stability",  "neighbours",   "render",  "device",           "periodic"};
 const std::vector<std::string> kAxisNames = {"x", "y", "z"};
 
 std::vector<std::string> spec_names(const std::vector<ParamSpec>& specs) {
@@ -379,7 +380,9 @@ void read_fluid_blocks(JsonInput& in, const json& doc, double h, SceneDescriptio
       }
     }
     earlier.emplace_back(path, *box);
-    bool inside = false;
+    // A world periodic along every axis needs no walls.
+    const auto& periodic = scene.world.periodic.periodic;
+    bool inside = periodic[0] && periodic[1] && periodic[2];
     for (const auto& c : scene.containers) inside = inside || c.box.contains(*box, 1e-9);
     if (!inside) {
       std::ostringstream msg;
@@ -604,11 +607,13 @@ SceneDescription read_scene(const json& doc, const Registry& registry, const std
   const double h = spacing.value_or(0.0);
 
   read_world_settings(in, doc, scene.world);
+  const PeriodicBounds periodic = read_periodic(in, doc, scene);
   read_materials(in, doc, registry, scene);
   read_containers(in, doc, h, scene);
   read_fluid_blocks(in, doc, h, scene);
   read_output(in, doc, scene);
   read_sections(in, doc, registry, scene);
+  check_periodic_scene(in, periodic, scene);
   in.for_each_object(doc, "", "probes", [&](const json& probe, const std::string& path) {
     read_probe(in, probe, path, h, scene);
   });

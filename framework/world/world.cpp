@@ -15,6 +15,7 @@
 #include "framework/particles/kinetic_energy.h"
 #include "framework/particles/particle_checks.h"
 #include "framework/particles/particle_identity.h"
+#include "framework/world/periodic_domain.h"
 
 namespace upf {
 
@@ -107,6 +108,15 @@ int World::request_neighbours(TypeMask query, TypeMask target, Real radius) {
 void World::prepare() {
   particles_.seal_fields(false);  // a second prepare() may declare more
   order_solvers();
+  // A periodic world holds its images as ghosts from here on, as a split world holds its
+  // neighbours' particles: a wall by a periodic face sees the walls across it.
+  if (settings_.periodic.any() && !domain_) {
+    domain_ = std::make_unique<PeriodicDomain>(settings_.periodic, settings_.support_radius());
+    domain_->distribute(particles_, coupling_);
+    executor_.attach(domain_.get());
+    periodic_images_only_ = true;
+  }
+  if (periodic_images_only_) domain_->exchange(step_count_);
   // Boundary particles keep their shape (walls stand still, a body moves as a whole), so their
   // volumes are computed once, here, each over its own body or over the walls.
   grid_.build(particles_, executor_);
@@ -114,6 +124,7 @@ void World::prepare() {
   grid_.find_neighbours(particles_, kBoundaryMask, kBoundaryMask, settings_.support_radius(),
                         executor_, boundary);
   compute_boundary_volumes(particles_, kBoundaryMask, boundary, kernel(), executor_);
+  if (periodic_images_only_) domain_->drop_ghosts();
   for (auto& b : bodies_) b->prepare(*this);
 
   stage_runners_.clear();
@@ -126,8 +137,10 @@ void World::prepare() {
   // Before any split over ranks: what a checkpoint of this scene must hold (restore_state).
   identity_ = particle_identity(particles_);
   prepared_ = true;
+  if (periodic_images_only_) domain_->exchange(step_count_);
   update_neighbours();
   for (auto& s : solvers_) s->initialize_fields(*this);
+  if (periodic_images_only_) domain_->drop_ghosts();
 }
 
 double World::next_time_step() const {
@@ -190,14 +203,17 @@ void World::step(double dt) {
   Stopwatch neighbours;
   // Reordering by the grid's (cell, id) order keeps neighbours close in memory. Lists depend on
   // positions and ids only, so the results are the same bits with or without it.
-  if (domain_) {
+  if (domain_ && !periodic_images_only_) {
     // Across ranks: migration and ghosts instead (the exchange appends arrivals and ghosts in
     // rank order; the lists do not depend on it either).
     domain_->exchange(step_count_);
-  } else if (settings_.reorder_every > 0 &&
-             step_count_ % std::uint64_t(settings_.reorder_every) == 0) {
-    grid_.build(particles_, executor_);
-    particles_.permute(grid_.sorted_order());
+  } else {
+    if (settings_.reorder_every > 0 && step_count_ % std::uint64_t(settings_.reorder_every) == 0) {
+      grid_.build(particles_, executor_);
+      particles_.permute(grid_.sorted_order());
+    }
+    // One process, periodic: the images go after the owned particles, as ghosts.
+    if (domain_) domain_->exchange(step_count_);
   }
   update_neighbours();
   report_ = StepReport{};
@@ -243,12 +259,16 @@ void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
     throw InputError("--device",
                      "a device pipeline runs on one rank: run it without mpirun -n, or run the "
                      "ranks on the CPU");
-  if (domain_) throw std::logic_error("World::set_domain() may run once");
+  if (domain_ && !periodic_images_only_) throw std::logic_error("World::set_domain() may run once");
   if (domain && domain->ranks() > 1)
     for (const auto& s : solvers_)
       if (const std::string why = s->cannot_split(); !why.empty())
         throw InputError("mpirun -n " + std::to_string(domain->ranks()),
                          "solver \"" + std::string(s->name()) + "\": " + why);
+  // Split over ranks, the ranks' domain holds the periodic images too; unsplit, a periodic
+  // world keeps its own.
+  if (!domain) return;
+  periodic_images_only_ = false;
   domain_ = std::move(domain);
   if (!domain_) return;
   domain_->distribute(particles_, coupling_);
@@ -259,6 +279,10 @@ void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
 
 void World::set_device(std::unique_ptr<DevicePipeline> pipeline) {
   if (!prepared_) throw std::logic_error("World::prepare() must run before World::set_device()");
+  if (pipeline && settings_.periodic.any())
+    throw InputError("/periodic",
+                     "a periodic domain runs on the CPU (and across MPI ranks); the device "
+                     "pipeline does not wrap particles yet: run it without --device");
   sync_host();
   device_ = std::move(pipeline);
   device_stale_ = device_ != nullptr;

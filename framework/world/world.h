@@ -173,6 +173,8 @@ class World {
   StepReport report_;
   std::unique_ptr<DevicePipeline> device_;
   std::unique_ptr<ParticleDomain> domain_;
+  // domain_ is the one-process PeriodicDomain prepare() made (set_domain may replace it).
+  bool periodic_images_only_ = false;
   mutable bool host_stale_ = false;  // the device's particles are newer
   bool device_stale_ = false;        // the host's particles are newer (or never uploaded)
 };

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "framework/core/vec3.h"
+#include "framework/world/periodic_box.h"
 
 namespace upf {
 
@@ -20,6 +21,7 @@ struct WorldSettings {
   TimeSettings time;
   double max_speed = 100;  // m/s: faster particles stop the run as unstable
   int reorder_every = 10;  // steps between locality reorders; 0 disables
+  PeriodicBox periodic;    // the axes along which the world repeats (none by default)
 
   Real support_radius() const { return support_factor * spacing; }
 };

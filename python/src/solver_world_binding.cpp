@@ -78,11 +78,15 @@ void bind_solver_world(py::module_& m) {
           "Creates a per-particle scalar field (in prepare); exported fields go into frames.")
       .def(
           "declare_vector",
-          [](SolverWorld& w, const std::string& name, bool exported) {
-            w.world().particles().declare_vector(name, Vec3{}, exported);
+          [](SolverWorld& w, const std::string& name, bool exported, bool positions) {
+            Particles& p = w.world().particles();
+            if (positions) p.declare_position_vector(name);
+            p.declare_vector(name, Vec3{}, exported);
           },
-          py::arg("name"), py::arg("exported") = false,
-          "Creates a per-particle 3-vector field (in prepare), zero to start with.")
+          py::arg("name"), py::arg("exported") = false, py::arg("positions") = false,
+          "Creates a per-particle 3-vector field (in prepare), zero to start with; positions=True "
+          "for a field of positions (a predicted position), which a periodic domain's images "
+          "hold shifted by the period.")
       .def(
           "request_neighbours",
           [](SolverWorld& w, const std::vector<std::string>& query,

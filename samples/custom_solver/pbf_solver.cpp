@@ -76,7 +76,7 @@ void PbfSolver::prepare(World& world) {
   Particles& p = world.particles();
   fields_.lambda = p.declare_scalar("pbf.lambda", 0, true);
   fields_.predicted_density = p.declare_scalar("pbf.predicted_density");
-  fields_.predicted_position = p.declare_vector("pbf.predicted_position");
+  fields_.predicted_position = p.declare_position_vector("pbf.predicted_position");
   fields_.position_correction = p.declare_vector("pbf.position_correction");
   fields_.displacement = p.declare_vector("pbf.displacement");
   fields_.boundary_gradient = p.declare_vector("pbf.boundary_gradient");

@@ -63,7 +63,7 @@ double PcisphSolver::template_delta_scale(Real spacing, const CubicSplineKernel&
 void PcisphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
   Particles& p = world.particles();
-  predicted_position_ = p.declare_vector(kPredictedPosition);
+  predicted_position_ = p.declare_position_vector(kPredictedPosition);
   predicted_density_ = p.declare_scalar(kPredictedDensity);
   reference_speed_ = free_fall_speed(world);
   delta_scale_ = template_delta_scale(world.settings().spacing, world.kernel());

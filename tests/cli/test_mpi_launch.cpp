@@ -18,7 +18,7 @@ namespace {
 
 class MpiLaunch : public Cli {};
 
-std::string contents(const fs::path& path) {
+[[maybe_unused]] std::string contents(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }

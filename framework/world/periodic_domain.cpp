@@ -1,0 +1,96 @@
+#include "framework/world/periodic_domain.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "framework/particles/particles.h"
+#include "framework/world/coupling.h"
+
+namespace upf {
+
+PeriodicDomain::PeriodicDomain(const PeriodicBox& box, Real reach)
+    // A little beyond the support radius: a neighbour at exactly the radius must not be lost to
+    // the rounding of the shifted position.
+    : box_(box), reach_(reach * Real(1.0001)) {}
+
+void PeriodicDomain::distribute(Particles& particles, CouplingArrays& coupling) {
+  particles_ = &particles;
+  coupling_ = &coupling;
+  drop_ghosts();
+}
+
+void PeriodicDomain::exchange(std::uint64_t) {
+  Particles& p = *particles_;
+  const std::size_t owned = p.owned_size();
+  // Frozen particles never move (and a wall may rest exactly on a face); the rest are wrapped.
+  for (std::size_t i = 0; i < owned; ++i)
+    if (p.type[i] != ParticleType::Frozen) box_.wrap(p.position[i]);
+  sources_.clear();
+  shifts_.clear();
+  for (std::size_t i = 0; i < owned; ++i)
+    box_.for_each_image_shift(p.position[i], reach_, [&](const Vec3& shift) {
+      sources_.push_back(std::uint32_t(i));
+      shifts_.push_back(shift);
+    });
+  scratch_.clear();
+  p.pack(sources_.data(), sources_.size(), scratch_);
+  p.append_packed(scratch_.data(), sources_.size());
+  p.set_ghost_count(sources_.size());
+  shift_images();
+  traffic_.owned = owned;
+  traffic_.ghosts = sources_.size();
+  traffic_.halo_bytes = 0;
+  traffic_.halo_refreshes = 0;
+}
+
+void shift_ghost_positions(Particles& particles, const std::vector<Vec3>& shifts) {
+  const std::size_t first = particles.owned_size();
+  for (std::vector<Vec3>* positions : particles.position_arrays())
+    for (std::size_t k = 0; k < shifts.size(); ++k)
+      (*positions)[first + k] = PeriodicBox::shifted((*positions)[first + k], shifts[k]);
+}
+
+void PeriodicDomain::shift_images() const {
+  shift_ghost_positions(*particles_, shifts_);
+}
+
+void PeriodicDomain::refresh_ghosts() const {
+  if (!particles_ || sources_.empty()) return;
+  Particles& p = *particles_;
+  const std::size_t first = p.owned_size();
+  scratch_.clear();
+  p.pack(sources_.data(), sources_.size(), scratch_);
+  p.overwrite_packed(first, scratch_.data(), sources_.size());
+  shift_images();
+  // The coupling arrays a later solver reads (reactions, drag) travel with the images too.
+  for (int a = 0; a < kCouplingArrayCount; ++a) {
+    const auto array = CouplingArray(a);
+    std::vector<Vec3>& values = (*coupling_)[array];
+    if (!coupling_->active(array) || values.size() != p.size()) continue;
+    for (std::size_t k = 0; k < sources_.size(); ++k) values[first + k] = values[sources_[k]];
+  }
+  traffic_.halo_bytes += scratch_.size();
+  ++traffic_.halo_refreshes;
+}
+
+void PeriodicDomain::drop_ghosts() {
+  particles_->truncate(particles_->owned_size());
+  particles_->set_ghost_count(0);
+  sources_.clear();
+  shifts_.clear();
+}
+
+void PeriodicDomain::gather(const Particles& owned, Particles& whole) const {
+  // In id order, as MpiDomain::gather: a periodic run's frames and checkpoints list the
+  // particles alike on one rank and on many.
+  whole = owned;
+  whole.truncate(owned.owned_size());
+  whole.set_ghost_count(0);
+  std::vector<std::uint32_t> order(whole.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return whole.id[a] < whole.id[b]; });
+  whole.permute(order);
+}
+
+}  // namespace upf
