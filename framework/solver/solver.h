@@ -66,6 +66,10 @@ class Solver {
   // per-particle arrays that neighbours read are fields, and whose reductions are the
   // executor's, can (docs/extending.md, "Determinism rules").
   virtual std::string cannot_split() const { return {}; }
+  // Why this solver cannot run beside ghosts (a periodic domain's images, periodic_domain.h),
+  // or empty when it can: its stages must leave neighbours' values to the ghost refresh after
+  // each stage. World::prepare refuses a periodic scene with such a solver.
+  virtual std::string cannot_hold_images() const { return {}; }
   // World::set_domain hands a solver that can split the domain it now runs on, once, before any
   // step. A solver that keeps state by particle id outside the fields (DEM's springs) sends it
   // after the particles that migrate (ParticleDomain::departed) and gathers it for checkpoints,

@@ -110,6 +110,10 @@ void World::prepare() {
   order_solvers();
   // A periodic world holds its images as ghosts from here on, as a split world holds its
   // neighbours' particles: a wall by a periodic face sees the walls across it.
+  if (settings_.periodic.any())
+    for (const auto& s : solvers_)
+      if (const std::string why = s->cannot_hold_images(); !why.empty())
+        throw InputError("/periodic", "solver \"" + std::string(s->name()) + "\": " + why);
   if (settings_.periodic.any() && !domain_) {
     domain_ = std::make_unique<PeriodicDomain>(settings_.periodic, settings_.support_radius());
     domain_->distribute(particles_, coupling_);

@@ -28,8 +28,16 @@ class PythonSolver final : public Solver {
   std::vector<std::string> stages() const override { return {name_}; }
   void step(World& world, Real dt, StageRunner& run) override;
   SolverStats stats() const override;
+  // Its step is one call into Python: values it writes are not refreshed on the ghosts between
+  // the loops inside it, and its arrays hold the ghosts too.
+  std::string cannot_split() const override { return kWholeStepInPython; }
+  std::string cannot_hold_images() const override { return kWholeStepInPython; }
 
  private:
+  static constexpr const char* kWholeStepInPython =
+      "a Python solver's step is one stage, so the ghosts that hold periodic images or other "
+      "ranks' particles would keep stale values between its passes; run it without "
+      "\"periodic\" and on one rank";
   std::string name_;
   pybind11::object solver_;
 };

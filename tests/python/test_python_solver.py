@@ -85,6 +85,17 @@ def test_a_parameter_out_of_range_is_a_scene_error(registry):
     assert any("speed_of_sound" in where for where, _ in error.value.problems)
 
 
+def test_a_periodic_scene_is_refused_for_a_python_solver(registry):
+    # Its step is one stage: the periodic images would keep stale values between its passes.
+    scene = tank({"name": "toy_wcsph"})
+    scene["periodic"] = {"x": [0, WIDTH]}
+    sim = upf.Simulation.from_dict(scene, registry=registry)
+    with pytest.raises(upf.SceneError) as error:
+        sim.advance_to(0.01)  # the world is prepared at its first use
+    assert any(where.endswith("/periodic") and "Python solver" in what
+               for where, what in error.value.problems)
+
+
 def test_the_python_wcsph_holds_pascals_law_in_the_tank(registry):
     # c = 10 sqrt(2 g H) keeps WCSPH's compression near 1 % (Becker & Teschner 2007).
     c = 10 * np.sqrt(2 * G * COLUMN)
