@@ -108,12 +108,12 @@ int World::request_neighbours(TypeMask query, TypeMask target, Real radius) {
 void World::prepare() {
   particles_.seal_fields(false);  // a second prepare() may declare more
   order_solvers();
-  // A periodic world holds its images as ghosts from here on, as a split world holds its
-  // neighbours' particles: a wall by a periodic face sees the walls across it.
   if (settings_.periodic.any())
     for (const auto& s : solvers_)
       if (const std::string why = s->cannot_hold_images(); !why.empty())
         throw InputError("/periodic", "solver \"" + std::string(s->name()) + "\": " + why);
+  // A periodic world holds its images as ghosts from here on, as a split world holds its
+  // neighbours' particles: a wall by a periodic face sees the walls across it.
   if (settings_.periodic.any() && !domain_) {
     domain_ = std::make_unique<PeriodicDomain>(settings_.periodic, settings_.support_radius());
     domain_->distribute(particles_, coupling_);
@@ -274,7 +274,6 @@ void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
   if (!domain) return;
   periodic_images_only_ = false;
   domain_ = std::move(domain);
-  if (!domain_) return;
   domain_->distribute(particles_, coupling_);
   executor_.attach(domain_.get());
   for (auto& s : solvers_) s->split_over(*domain_);
