@@ -114,10 +114,8 @@ void MpiDomain::distribute(Particles& particles, CouplingArrays& coupling) {
 void MpiDomain::migrate() {
   Particles& p = *particles_;
   const std::size_t owned = p.owned_size();
-  // What left the periodic box comes back through the opposite face (frozen walls stay put).
-  if (periodic_.any())
-    for (std::size_t i = 0; i < owned; ++i)
-      if (p.type[i] != ParticleType::Frozen) periodic_.wrap(p.position[i]);
+  // What left the periodic box comes back through the opposite face.
+  if (periodic_.any()) wrap_moving_particles(p, periodic_);
   if (!balanced_) {
     rcb_->balance(p.position.data(), owned);
     balanced_ = true;
@@ -317,11 +315,7 @@ void MpiDomain::gather(const Particles& owned, Particles& whole) const {
     whole.append_packed(received.data() + at[std::size_t(r)],
                         std::size_t(counts[std::size_t(r)]) / per_particle);
   // In id order: the frames of any rank count list the particles alike.
-  std::vector<std::uint32_t> order(whole.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return whole.id[a] < whole.id[b]; });
-  whole.permute(order);
+  whole.sort_by_id();
 }
 
 std::vector<std::uint8_t> MpiDomain::exchange_bytes(

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 #include <type_traits>
 
@@ -97,11 +98,12 @@ FieldHandle<Vec3> Particles::declare_position_vector(const std::string& name) {
   return h;
 }
 
-std::vector<std::vector<Vec3>*> Particles::position_arrays() {
-  std::vector<std::vector<Vec3>*> arrays = {&position};
-  for (auto& [name, f] : vectors_)
-    if (f.position) arrays.push_back(&f.values);
-  return arrays;
+void Particles::sort_by_id() {
+  std::vector<std::uint32_t> order(size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return id[a] < id[b]; });
+  permute(order);
 }
 
 namespace {

@@ -91,8 +91,15 @@ class Particles {
   FieldHandle<Vec3> declare_scratch_vector(const std::string& name);
   // A vector field of positions (Field::position): PCISPH's and PBF's predicted positions.
   FieldHandle<Vec3> declare_position_vector(const std::string& name);
-  // `position` and every field of positions: what a periodic image shifts.
-  std::vector<std::vector<Vec3>*> position_arrays();
+  // visit(array) for `position` and every field of positions: what a periodic image shifts.
+  template <class Visit>
+  void for_each_position_array(Visit&& visit) {
+    visit(position);
+    for (auto& [name, f] : vectors_)
+      if (f.position) visit(f.values);
+  }
+  // Reorders every array by stable id (frames and checkpoints of a domain list them so).
+  void sort_by_id();
   // A field someone else declared, for `who` (a solver or system name, for the error).
   FieldHandle<Real> scalar(const std::string& name, const std::string& who);
   FieldHandle<Vec3> vector(const std::string& name, const std::string& who);

@@ -1,8 +1,5 @@
 #include "framework/world/periodic_domain.h"
 
-#include <algorithm>
-#include <numeric>
-
 #include "framework/particles/particles.h"
 #include "framework/world/coupling.h"
 
@@ -22,9 +19,7 @@ void PeriodicDomain::distribute(Particles& particles, CouplingArrays& coupling) 
 void PeriodicDomain::exchange(std::uint64_t) {
   Particles& p = *particles_;
   const std::size_t owned = p.owned_size();
-  // Frozen particles never move (and a wall may rest exactly on a face); the rest are wrapped.
-  for (std::size_t i = 0; i < owned; ++i)
-    if (p.type[i] != ParticleType::Frozen) box_.wrap(p.position[i]);
+  wrap_moving_particles(p, box_);
   sources_.clear();
   shifts_.clear();
   for (std::size_t i = 0; i < owned; ++i)
@@ -43,11 +38,17 @@ void PeriodicDomain::exchange(std::uint64_t) {
   traffic_.halo_refreshes = 0;
 }
 
+void wrap_moving_particles(Particles& particles, const PeriodicBox& box) {
+  for (std::size_t i = 0; i < particles.owned_size(); ++i)
+    if (particles.type[i] != ParticleType::Frozen) box.wrap(particles.position[i]);
+}
+
 void shift_ghost_positions(Particles& particles, const std::vector<Vec3>& shifts) {
   const std::size_t first = particles.owned_size();
-  for (std::vector<Vec3>* positions : particles.position_arrays())
+  particles.for_each_position_array([&](std::vector<Vec3>& positions) {
     for (std::size_t k = 0; k < shifts.size(); ++k)
-      (*positions)[first + k] = PeriodicBox::shifted((*positions)[first + k], shifts[k]);
+      positions[first + k] = PeriodicBox::shifted(positions[first + k], shifts[k]);
+  });
 }
 
 void PeriodicDomain::shift_images() const {
@@ -86,11 +87,7 @@ void PeriodicDomain::gather(const Particles& owned, Particles& whole) const {
   whole = owned;
   whole.truncate(owned.owned_size());
   whole.set_ghost_count(0);
-  std::vector<std::uint32_t> order(whole.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return whole.id[a] < whole.id[b]; });
-  whole.permute(order);
+  whole.sort_by_id();
 }
 
 }  // namespace upf

@@ -16,8 +16,11 @@
 
 namespace upf {
 
+// What MpiDomain and PeriodicDomain share. The owned particles that move (not frozen ones: a wall
+// may rest exactly on a face) are wrapped into the box.
+void wrap_moving_particles(Particles& particles, const PeriodicBox& box);
 // Ghost k (particle owned_size() + k) gets shifts[k] added to its position and to every field of
-// positions (Particles::position_arrays): the periodic images of MpiDomain and PeriodicDomain.
+// positions (Particles::for_each_position_array).
 void shift_ghost_positions(Particles& particles, const std::vector<Vec3>& shifts);
 
 class PeriodicDomain final : public ParticleDomain {

@@ -27,6 +27,20 @@ void expect_identical(const testing::StateById& a, const testing::StateById& b) 
       << "particles whose position or velocity differ in some bit";
 }
 
+// `first` steps on 2 threads, a checkpoint, `rest` steps on 1 thread from it: `expected`'s bits.
+void expect_resumed_identical(const nlohmann::json& doc, int first, int rest,
+                              const testing::StateById& expected) {
+  testing::TestWorld before(doc, 2);
+  for (int s = 0; s < first; ++s) before.world->step(before.world->next_time_step());
+  StateWriter saved;
+  before.world->save_state(saved);
+  testing::TestWorld resumed(doc, 1);
+  StateReader in(saved.bytes(), "after " + std::to_string(first) + " steps");
+  resumed.world->restore_state(in);
+  for (int s = 0; s < rest; ++s) resumed.world->step(resumed.world->next_time_step());
+  expect_identical(expected, testing::state_by_id(resumed.world->particles()));
+}
+
 nlohmann::json small_dam_break(const std::string& solver = "pcisph") {
   auto doc = testing::load_sample_json("dam_break.json");
   doc["particle_spacing"] = 0.04;
@@ -83,15 +97,7 @@ TEST(Determinism, PeriodicDomainGivesBitwiseIdenticalPositions) {
   const auto start = run_steps(doc, 1, 0);
   for (const auto& [id, state] : one) wrapped += state.first.x > start.at(id).first.x + Real(0.8);
   EXPECT_GT(wrapped, 10u);
-  testing::TestWorld first(doc, 2);
-  for (int s = 0; s < 200; ++s) first.world->step(first.world->next_time_step());
-  StateWriter saved;
-  first.world->save_state(saved);
-  testing::TestWorld resumed(doc, 1);
-  StateReader in(saved.bytes(), "after 200 steps");
-  resumed.world->restore_state(in);
-  for (int s = 0; s < 100; ++s) resumed.world->step(resumed.world->next_time_step());
-  expect_identical(one, testing::state_by_id(resumed.world->particles()));
+  expect_resumed_identical(doc, 200, 100, one);
 }
 
 // Implicit viscosity (implicit_viscosity.h): gather-only stages and a conjugate gradient steered
@@ -106,15 +112,7 @@ TEST(Determinism, ImplicitViscosityGivesBitwiseIdenticalPositions) {
   expect_identical(one, run_steps(doc, 2, 100));
   EXPECT_GT(testing::bitwise_differences(one, run_steps(doc, 1, 0), true), 1000u);
   // Through a checkpoint after 60 steps: the warm start (viscosity.acceleration) goes with it.
-  testing::TestWorld first(doc, 2);
-  for (int s = 0; s < 60; ++s) first.world->step(first.world->next_time_step());
-  StateWriter saved;
-  first.world->save_state(saved);
-  testing::TestWorld resumed(doc, 1);
-  StateReader in(saved.bytes(), "after 60 steps");
-  resumed.world->restore_state(in);
-  for (int s = 0; s < 40; ++s) resumed.world->step(resumed.world->next_time_step());
-  expect_identical(one, testing::state_by_id(resumed.world->particles()));
+  expect_resumed_identical(doc, 60, 40, one);
 }
 
 // DEM: each grain gathers its contacts and keeps its own contact history; pairs are computed

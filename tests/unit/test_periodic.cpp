@@ -2,6 +2,7 @@
 // scene key's checks, and a world's images of its particles.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -134,16 +135,23 @@ TEST(PeriodicScene, RefusesWhatCannotRepeatWithThePathAndTheReason) {
       << problem_at(doc, "/materials/sand");
 }
 
+// Water filling the box [0, size] that repeats along every axis, moving at `velocity`: no walls,
+// no surface.
+nlohmann::json water_filling_a_periodic_box(const std::array<double, 3>& size,
+                                            const std::array<double, 3>& velocity) {
+  return {{"name", "periodic_box"},
+          {"particle_spacing", 0.01},
+          {"gravity", {0, 0, 0}},
+          {"materials", {{"water", {{"type", "liquid"}, {"solver", "pcisph"}}}}},
+          {"periodic", {{"x", {0, size[0]}}, {"y", {0, size[1]}}, {"z", {0, size[2]}}}},
+          {"fluid_blocks",
+           {{{"material", "water"}, {"min", {0, 0, 0}}, {"max", size}, {"velocity", velocity}}}}};
+}
+
 // A liquid at rest filling a box periodic in every axis has no surface anywhere: every particle
 // sums the lattice's full kernel sum, and PCISPH keeps every particle where it is.
 TEST(PeriodicWorld, ALiquidFillingAPeriodicBoxHasTheRestDensityEverywhere) {
-  const nlohmann::json doc = {
-      {"name", "cube"},
-      {"particle_spacing", 0.01},
-      {"gravity", {0, 0, 0}},
-      {"materials", {{"water", {{"type", "liquid"}, {"solver", "pcisph"}}}}},
-      {"periodic", {{"x", {0, 0.06}}, {"y", {0, 0.05}}, {"z", {0, 0.07}}}},
-      {"fluid_blocks", {{{"material", "water"}, {"min", {0, 0, 0}}, {"max", {0.06, 0.05, 0.07}}}}}};
+  const nlohmann::json doc = water_filling_a_periodic_box({0.06, 0.05, 0.07}, {0, 0, 0});
   testing::TestWorld t(doc, 2);
   for (int s = 0; s < 20; ++s) t.world->step(0.002);
   const Particles& p = t.world->particles();
@@ -159,17 +167,7 @@ TEST(PeriodicWorld, ALiquidFillingAPeriodicBoxHasTheRestDensityEverywhere) {
 
 // Particles that cross a face come back through the opposite one, at the same speed.
 TEST(PeriodicWorld, AUniformStreamWrapsAroundAndStaysUniform) {
-  const nlohmann::json doc = {
-      {"name", "stream"},
-      {"particle_spacing", 0.01},
-      {"gravity", {0, 0, 0}},
-      {"materials", {{"water", {{"type", "liquid"}, {"solver", "pcisph"}}}}},
-      {"periodic", {{"x", {0, 0.06}}, {"y", {0, 0.05}}, {"z", {0, 0.05}}}},
-      {"fluid_blocks",
-       {{{"material", "water"},
-         {"min", {0, 0, 0}},
-         {"max", {0.06, 0.05, 0.05}},
-         {"velocity", {0.5, 0, 0.25}}}}}};
+  const nlohmann::json doc = water_filling_a_periodic_box({0.06, 0.05, 0.05}, {0.5, 0, 0.25});
   testing::TestWorld t(doc, 2);
   for (int s = 0; s < 100; ++s) t.world->step(0.002);  // 0.1 m in x: past the period
   const Particles& p = t.world->particles();
