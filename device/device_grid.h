@@ -271,7 +271,8 @@ class DeviceGrid {
     keys_.resize(n);
     for_each_index<Backend>(n, KeyStage{x, origin_, cell_size_, raw<std::uint64_t>(keys_)});
 
-    // (key, id) order: by id first (ids are unique), then a stable sort by key.
+    // (key, id) order: by id first, then a stable sort by key. An id repeats only in periodic
+    // images, a period (more than two cells) away from each other, so (key, id) is unique.
     order_.resize(n);
     thrust::sequence(Backend::policy(), order_.begin(), order_.end());
     scratch_ids_.resize(n);

@@ -42,6 +42,9 @@ class DeviceParticles {
     exported_.clear();
     for (const auto& [name, f] : p.scalar_fields()) exported_[name] = f.exported;
     for (const auto& [name, f] : p.vector_fields()) exported_[name] = f.exported;
+    positions_.clear();
+    for (const auto& [name, f] : p.vector_fields())
+      if (f.position) positions_.push_back(name);
   }
 
   // Every array and named field into `p`, which has the same fields (the one uploaded from).
@@ -57,6 +60,7 @@ class DeviceParticles {
     for (const auto& [name, f] : vectors_)
       if (exported_.at(name)) into.vectors_[name] = f;
     into.exported_ = exported_;
+    into.positions_ = positions_;
   }
 
   // A named field's array; the object stays put (reordering swaps its contents).
@@ -71,6 +75,34 @@ class DeviceParticles {
     for (const auto& [name, f] : scalars_) add(f);
     for (const auto& [name, f] : vectors_) add(f);
     return total;
+  }
+
+  // Copies of particles sources[k] at first + k in every array and field, as a ghost refresh
+  // copies them (Particles::overwrite_packed); with `grow`, the arrays grow to hold them first
+  // (Particles::append_packed). Sources lie below `first`.
+  void copy_to_tail(std::size_t first, const vector<std::uint32_t>& sources, bool grow) {
+    auto copy = [&](auto& a) {
+      if (grow) a.resize(first + sources.size());
+      thrust::gather(Backend::policy(), sources.begin(), sources.end(), a.begin(),
+                     a.begin() + std::ptrdiff_t(first));
+    };
+    Particles::for_each_builtin([&](auto& a) { copy(a); }, *this);
+    for (auto& [name, f] : scalars_) copy(f);
+    for (auto& [name, f] : vectors_) copy(f);
+  }
+
+  // Keeps the first n particles of every array and field (Particles::truncate).
+  void truncate(std::size_t n) {
+    Particles::for_each_builtin([&](auto& a) { a.resize(n); }, *this);
+    for (auto& [name, f] : scalars_) f.resize(n);
+    for (auto& [name, f] : vectors_) f.resize(n);
+  }
+
+  // visit(array) for `position` and every field of positions (Particles::for_each_position_array).
+  template <class Visit>
+  void for_each_position_array(Visit&& visit) {
+    visit(position);
+    for (const std::string& name : positions_) visit(vectors_.at(name));
   }
 
   // new[i] = old[order[i]] for every array.
@@ -98,6 +130,7 @@ class DeviceParticles {
   std::map<std::string, vector<Real>> scalars_;
   std::map<std::string, vector<Vec3>> vectors_;
   std::map<std::string, bool> exported_;
+  std::vector<std::string> positions_;  // the vector fields of positions (Field::position)
 };
 
 }  // namespace upf::device

@@ -37,6 +37,19 @@ void check_covered(const World& world, const std::string& where) {
                                   "' has no device "
                                   "part: " +
                                   kCovered);
+  // Periodic images on the device are the fluids' (device_images.h); scenes refuse grains and
+  // bodies in a periodic domain anyway (periodic_keys.cpp).
+  if (!world.settings().periodic.any()) return;
+  for (const auto& s : world.solvers())
+    if (dynamic_cast<const DemSolver*>(s.get()))
+      throw InputError(where,
+                       "a periodic world on the device pipeline holds liquids and walls "
+                       "only; its solver '" +
+                           std::string(s->name()) + "' moves grains");
+  if (!world.body_systems().empty())
+    throw InputError(where,
+                     "a periodic world on the device pipeline holds liquids and walls "
+                     "only, no bodies");
 }
 
 [[maybe_unused]] device::FluidSetup fluid_setup(const World& world, const Solver& solver,
@@ -119,6 +132,7 @@ void check_covered(const World& world, const std::string& where) {
   setup.world.threads = world.executor().threads();
   setup.world.boundary_force = world.coupling().active(CouplingArray::BoundaryForce);
   setup.world.liquid_force = world.coupling().active(CouplingArray::LiquidForce);
+  setup.world.periodic = world.settings().periodic;
   for (const auto& s : world.solvers()) setup.solvers.push_back(solver_setup(world, *s));
   return setup;
 }

@@ -152,15 +152,28 @@ std::size_t first_by_id(std::size_t n, const std::uint32_t* id, const Predicate&
   return best == ~std::uint64_t(0) ? n : std::size_t(best & 0xffffffffu);
 }
 
+// The ghosts a device pipeline holds (its periodic images, device_images.h), refreshed after
+// every shared stage as CpuExecutor::run refreshes a domain's through its rank collectives.
+class DeviceGhosts {
+ public:
+  virtual void refresh_ghosts() const = 0;
+
+ protected:
+  ~DeviceGhosts() = default;
+};
+
 // The primitives above as an executor object with CpuExecutor's interface, so orchestration
 // written once for both (pcisph_correction_loop.h) runs on a backend unchanged.
 template <class Backend>
 struct DeviceExecutor {
+  const DeviceGhosts* ghosts = nullptr;  // null: no ghosts
+
   template <class Stage>
   void run(ParticleRange range, const Stage& stage) const {
     device::run<Backend>(range, stage);
+    if (ghosts) ghosts->refresh_ghosts();
   }
-  // One device: no ghosts to refresh (CpuExecutor::run_unshared).
+  // Without the ghost refresh (CpuExecutor::run_unshared).
   template <class Stage>
   void run_unshared(ParticleRange range, const Stage& stage) const {
     device::run<Backend>(range, stage);

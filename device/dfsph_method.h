@@ -33,12 +33,16 @@ class DfsphMethod {
   void bind(DeviceParticles<Backend>& p) {
     density_stiffness_ = &p.scalar_array(setup_.density_stiffness);
     divergence_stiffness_ = &p.scalar_array(setup_.divergence_stiffness);
+    factor_ = &p.scalar_array(kDfsphFactorField);
+    boundary_divergence_ = &p.scalar_array(kDfsphBoundaryDivergenceField);
+    rho_adv_ = &p.scalar_array(kDfsphAdvectedDensityField);
+    k_ = &p.scalar_array(kDfsphStiffnessField);
+    k_total_ = &p.scalar_array(kDfsphTotalStiffnessField);
+    v_star_ = &p.vector_array(kDfsphPredictedVelocityField);
   }
 
   template <class Executor, class Step>
   void non_pressure(const Executor& exec, const Step& s) {
-    for (auto* a : {&factor_, &boundary_divergence_, &rho_adv_, &k_, &k_total_}) a->resize(s.n);
-    v_star_.resize(s.n);
     run_dfsph_non_pressure(exec, arrays(s));
   }
 
@@ -57,7 +61,7 @@ class DfsphMethod {
   template <class Executor, class Step>
   void add_reactions(const Executor& exec, const Step& s) const {
     run_boundary_reactions(exec, s.n, s.f, s.fluid_of_boundary, s.density, s.owns,
-                           TotalStiffness{raw<Real>(k_total_)}, CubicSplineGradient{s.f.kernel},
+                           TotalStiffness{raw<Real>(*k_total_)}, CubicSplineGradient{s.f.kernel},
                            s.boundary_force);
   }
 
@@ -66,10 +70,8 @@ class DfsphMethod {
     run_dfsph_integration(exec, arrays(s), s.dt, velocity, position, s.pressure);
   }
 
-  std::size_t bytes() const {
-    return bytes_of(factor_) + bytes_of(boundary_divergence_) + bytes_of(rho_adv_) + bytes_of(k_) +
-           bytes_of(k_total_) + bytes_of(v_star_) + stopping_.bytes();
-  }
+  // The work arrays are the particles' scratch fields (DeviceParticles::bytes counts them).
+  std::size_t bytes() const { return stopping_.bytes(); }
 
  private:
   template <class Step>
@@ -89,18 +91,19 @@ class DfsphMethod {
             s.density,
             raw<Real>(*density_stiffness_),
             raw<Real>(*divergence_stiffness_),
-            raw<Real>(factor_),
-            raw<Real>(boundary_divergence_),
-            raw<Real>(rho_adv_),
-            raw<Real>(k_),
-            raw<Real>(k_total_),
-            raw<Vec3>(v_star_)};
+            raw<Real>(*factor_),
+            raw<Real>(*boundary_divergence_),
+            raw<Real>(*rho_adv_),
+            raw<Real>(*k_),
+            raw<Real>(*k_total_),
+            raw<Vec3>(*v_star_)};
   }
 
   DfsphSetup setup_;
   DeviceStoppingError<Backend> stopping_;
-  vector<Real> factor_, boundary_divergence_, rho_adv_, k_, k_total_;
-  vector<Vec3> v_star_;
+  vector<Real>*factor_ = nullptr, *boundary_divergence_ = nullptr, *rho_adv_ = nullptr,
+  *k_ = nullptr, *k_total_ = nullptr;
+  vector<Vec3>* v_star_ = nullptr;
   vector<Real>* density_stiffness_ = nullptr;
   vector<Real>* divergence_stiffness_ = nullptr;
 };

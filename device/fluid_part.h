@@ -57,6 +57,10 @@ class FluidPart final : public SolverPart<Backend> {
   void bind(PipelineState<Backend>& state) override {
     density_ = &state.particles.scalar_array(setup_.density);
     pressure_ = &state.particles.scalar_array(setup_.pressure);
+    pressure_acceleration_ = &state.particles.vector_array(kPressureAccelerationField);
+    surface_normal_ = setup_.surface_model != SurfaceTensionModel::None
+                          ? &state.particles.vector_array(kSurfaceNormalField)
+                          : nullptr;
     method_.bind(state.particles);
   }
 
@@ -65,15 +69,15 @@ class FluidPart final : public SolverPart<Backend> {
 
   std::size_t bytes() const override {
     return bytes_of(owned_) + bytes_of(fluid_gradient_) + bytes_of(boundary_gradient_) +
-           bytes_of(other_acceleration_) + bytes_of(pressure_acceleration_) + method_.bytes() +
-           bytes_of(rest_density_) + bytes_of(viscosity_) + bytes_of(boundary_viscosity_) +
-           bytes_of(cohesion_) + bytes_of(adhesion_) + bytes_of(surface_normal_) + bytes_of(owns_);
+           bytes_of(other_acceleration_) + method_.bytes() + bytes_of(rest_density_) +
+           bytes_of(viscosity_) + bytes_of(boundary_viscosity_) + bytes_of(cohesion_) +
+           bytes_of(adhesion_) + bytes_of(owns_);
   }
 
   void step(PipelineState<Backend>& state, Real dt) override {
     stages_.clear();
     const std::size_t n = state.particles.size();
-    const DeviceExecutor<Backend> exec;
+    const DeviceExecutor<Backend> exec{state.ghosts};
     FluidStep step{};
     step.n = n;
     step.dt = dt;
@@ -88,13 +92,12 @@ class FluidPart final : public SolverPart<Backend> {
 
     stages_("non_pressure", [&] {
       step.owned = indices_where<Backend>(
-          n, part_detail::OwnedIndex{raw<MaterialId>(state.particles.material), step.owns}, owned_);
+          state.owned,
+          part_detail::OwnedIndex{raw<MaterialId>(state.particles.material), step.owns}, owned_);
       // Recomputed where used unless the setup asks to store them (FluidGradients).
       fluid_gradient_.resize(setup_.store_gradients ? state.lists.list(fluid_list_).total() : 0);
       boundary_gradient_.resize(n);
       other_acceleration_.resize(n);
-      pressure_acceleration_.resize(n);
-      surface_normal_.resize(setup_.surface_model != SurfaceTensionModel::None ? n : 0);
       step.f = fluid_view(state);
       ImplicitViscosityStep viscous;
       ImplicitViscosityArrays viscosity_arrays{};
@@ -108,7 +111,7 @@ class FluidPart final : public SolverPart<Backend> {
           setup_.store_gradients ? FluidGradients(raw<Vec3>(fluid_gradient_)) : FluidGradients();
       step.boundary_gradient = raw<Vec3>(boundary_gradient_);
       step.other_acceleration = raw<Vec3>(other_acceleration_);
-      step.pressure_acceleration = raw<Vec3>(pressure_acceleration_);
+      step.pressure_acceleration = raw<Vec3>(*pressure_acceleration_);
       Vec3* wall_velocity = nullptr;
       if (wall_list_ >= 0) {
         wall_velocity = raw<Vec3>(state.particles.vector_array(kWallVelocityField));
@@ -117,7 +120,7 @@ class FluidPart final : public SolverPart<Backend> {
       const ImplicitViscosityStats viscosity_stats = run_non_pressure_stages(
           exec, step.owned, step.f,
           {step.fluid_gradient, step.boundary_gradient, step.other_acceleration, step.density,
-           liquid_force, step.pressure, step.f.surface.on() ? raw<Vec3>(surface_normal_) : nullptr,
+           liquid_force, step.pressure, surface_normal_ ? raw<Vec3>(*surface_normal_) : nullptr,
            wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{}, wall_velocity, n},
           state.world.gravity, viscous);
       viscosity_iterations_ = viscosity_stats.iterations;
@@ -172,7 +175,7 @@ class FluidPart final : public SolverPart<Backend> {
     f.surface.adhesion = raw<Real>(adhesion_);
     f.surface.materials = std::uint32_t(setup_.rest_density.size());
     f.surface.has_adhesion = setup_.has_adhesion;
-    if (f.surface.on()) f.surface.normal = raw<Vec3>(surface_normal_);
+    if (surface_normal_) f.surface.normal = raw<Vec3>(*surface_normal_);
     return f;
   }
 
@@ -185,8 +188,10 @@ class FluidPart final : public SolverPart<Backend> {
   vector<Real> rest_density_, viscosity_, boundary_viscosity_, cohesion_, adhesion_;
   vector<std::uint8_t> owns_;
   vector<std::uint32_t> owned_;
-  vector<Vec3> fluid_gradient_, boundary_gradient_, other_acceleration_, pressure_acceleration_,
-      surface_normal_;
+  vector<Vec3> fluid_gradient_, boundary_gradient_, other_acceleration_;
+  // The particles' scratch fields, as on the CPU: ghosts and periodic images carry them.
+  vector<Vec3>* pressure_acceleration_ = nullptr;
+  vector<Vec3>* surface_normal_ = nullptr;
   vector<Real>* density_ = nullptr;
   vector<Real>* pressure_ = nullptr;
 };

@@ -33,7 +33,7 @@ struct FluidSetup {
   bool implicit_viscosity = false;
   ImplicitViscositySettings viscosity_solve{};
   bool wall_friction = false;  // FluidSolverState::wall_list: walls' velocities extrapolated
-  bool reactions = false;  // rigid particles whose reactions a body system sums
+  bool reactions = false;      // rigid particles whose reactions a body system sums
   // Keep grad W_ij per fluid pair (12 B a pair, as the CPU path does) instead of recomputing it
   // where used: the same bits either way (FluidGradients).
   bool store_gradients = false;

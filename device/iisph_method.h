@@ -29,13 +29,17 @@ class IisphMethod : public ThreeStageMethod {
   explicit IisphMethod(IisphSetup setup)
       : setup_(std::move(setup)), stopping_(setup_.stop_percentile) {}
 
-  void bind(DeviceParticles<Backend>&) {}
+  void bind(DeviceParticles<Backend>& p) {
+    inverse_diagonal_ = &p.scalar_array(kIisphInverseDiagonalField);
+    boundary_divergence_ = &p.scalar_array(kIisphBoundaryDivergenceField);
+    rho_adv_ = &p.scalar_array(kIisphAdvectedDensityField);
+    predicted_ = &p.scalar_array(kIisphPredictedDensityField);
+    next_ = &p.scalar_array(kIisphNextPressureField);
+    v_adv_ = &p.vector_array(kIisphAdvectedVelocityField);
+  }
 
   template <class Executor, class Step>
   void non_pressure(const Executor& exec, const Step& s) {
-    for (auto* a : {&inverse_diagonal_, &boundary_divergence_, &rho_adv_, &predicted_, &next_})
-      a->resize(s.n);
-    v_adv_.resize(s.n);
     run_iisph_non_pressure(exec, arrays(s));
   }
 
@@ -54,10 +58,8 @@ class IisphMethod : public ThreeStageMethod {
                            CubicSplineGradient{s.f.kernel}, s.boundary_force);
   }
 
-  std::size_t bytes() const {
-    return bytes_of(inverse_diagonal_) + bytes_of(boundary_divergence_) + bytes_of(rho_adv_) +
-           bytes_of(predicted_) + bytes_of(next_) + bytes_of(v_adv_) + stopping_.bytes();
-  }
+  // The work arrays are the particles' scratch fields (DeviceParticles::bytes counts them).
+  std::size_t bytes() const { return stopping_.bytes(); }
 
  private:
   template <class Step>
@@ -71,18 +73,19 @@ class IisphMethod : public ThreeStageMethod {
             s.density,
             s.pressure_acceleration,
             s.pressure,
-            raw<Real>(inverse_diagonal_),
-            raw<Real>(boundary_divergence_),
-            raw<Real>(rho_adv_),
-            raw<Real>(predicted_),
-            raw<Real>(next_),
-            raw<Vec3>(v_adv_)};
+            raw<Real>(*inverse_diagonal_),
+            raw<Real>(*boundary_divergence_),
+            raw<Real>(*rho_adv_),
+            raw<Real>(*predicted_),
+            raw<Real>(*next_),
+            raw<Vec3>(*v_adv_)};
   }
 
   IisphSetup setup_;
   DeviceStoppingError<Backend> stopping_;
-  vector<Real> inverse_diagonal_, boundary_divergence_, rho_adv_, predicted_, next_;
-  vector<Vec3> v_adv_;
+  vector<Real>*inverse_diagonal_ = nullptr, *boundary_divergence_ = nullptr, *rho_adv_ = nullptr,
+  *predicted_ = nullptr, *next_ = nullptr;
+  vector<Vec3>* v_adv_ = nullptr;
 };
 
 }  // namespace upf::device

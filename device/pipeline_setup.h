@@ -10,6 +10,7 @@
 
 #include "device/fluid_setup.h"
 #include "framework/core/vec3.h"
+#include "framework/world/periodic_box.h"
 #include "solvers/dem/dem_spring_state.h"
 #include "solvers/dem/dem_step_setup.h"
 
@@ -23,6 +24,7 @@ struct WorldSetup {
   int threads = 0;
   bool boundary_force = false;  // CouplingArray::BoundaryForce is active
   bool liquid_force = false;    // CouplingArray::LiquidForce is active
+  PeriodicBox periodic;         // WorldSettings::periodic: images as ghosts (device_images.h)
 };
 
 // A fluid solver: the shared constants and its pressure method's.

@@ -30,6 +30,10 @@ struct PipelineState {
 
   WorldSetup world;
   DeviceParticles<Backend> particles;
+  // The particles [0, owned) are the world's; periodic images follow them during a step, and
+  // `ghosts` (null without) refreshes them after every shared stage (DeviceExecutor).
+  std::size_t owned = 0;
+  const DeviceGhosts* ghosts = nullptr;
   DeviceLists<Backend> lists;
   // The coupling arrays, sized and zeroed at each step's start when active; empty otherwise.
   vector<Vec3> boundary_force, liquid_force;

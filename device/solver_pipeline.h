@@ -7,7 +7,8 @@
 // the host's body system), reordering on the world's cadence, every list the parts asked for
 // (device_lists.h), the coupling arrays zeroed, then each part's stages, timed like the CPU's.
 // Every per-particle stage and every reduction gives the CPU executor's bits (device_primitives.h,
-// device_grid.h), so frames of this pipeline equal the CPU's bit for bit (tests/device). Scenes it
+// device_grid.h), so frames of this pipeline equal the CPU's bit for bit (tests/device). A
+// periodic world's images live on the device during a step (device_images.h). Scenes it
 // does not cover are refused by make_device_pipeline, never run half-way. Its inputs are plain
 // values (pipeline_setup.h): no world header reaches nvcc.
 #pragma once
@@ -24,6 +25,7 @@
 
 #include "device/device_bodies.h"
 #include "device/device_grid.h"
+#include "device/device_images.h"
 #include "device/solver_part.h"
 #include "framework/core/stopwatch.h"
 #include "framework/particles/kinetic_energy.h"
@@ -57,9 +59,13 @@ class SolverPipeline final : public DevicePipeline {
 
  public:
   explicit SolverPipeline(const WorldSetup& world)
-      : state_(world), grid_(world.support_radius), threads_(world.threads) {
+      : state_(world),
+        grid_(world.support_radius),
+        images_(world.periodic, world.support_radius),
+        threads_(world.threads) {
     // The penetration guard's list (the fluids ask for the same one).
     guard_list_ = state_.lists.request(kLiquidMask, kBoundaryMask);
+    if (world.periodic.any()) state_.ghosts = &images_;
   }
 
   // Parts are added in the world's solver order, before the first upload; they ask for their
@@ -125,7 +131,7 @@ class SolverPipeline final : public DevicePipeline {
     std::size_t total = state_.particles.bytes() + last_good_.bytes() + grid_.bytes() +
                         state_.lists.bytes() + bytes_of(state_.boundary_force) +
                         bytes_of(state_.liquid_force) + bodies_.bytes() +
-                        bytes_of(block_partials_) + bytes_of(speed_materials_);
+                        bytes_of(block_partials_) + bytes_of(speed_materials_) + images_.bytes();
     for (const auto& part : parts_) total += part->bytes();
     return total;
   }
@@ -171,6 +177,13 @@ class SolverPipeline final : public DevicePipeline {
     update_neighbours(step_count);
     report.neighbour_ms = neighbours.elapsed_ms();
     reset_coupling();
+    // Between steps the device holds the world's particles only, also after a failed step.
+    struct DropImages {
+      SolverPipeline* pipeline;
+      ~DropImages() {
+        if (pipeline->state_.ghosts) pipeline->images_.drop();
+      }
+    } drop_images{this};
     for (auto& part : parts_) {
       part->step(state_, Real(dt));
       const StageRunner& stages = part->stages();
@@ -191,18 +204,20 @@ class SolverPipeline final : public DevicePipeline {
   }
 
  private:
-  // World::step's reordering and update_neighbours.
+  // World::step's reordering, periodic images (PeriodicDomain::exchange) and update_neighbours.
   void update_neighbours(std::uint64_t step_count) {
     DeviceParticles<Backend>& p = state_.particles;
-    const std::size_t n = p.size();
+    state_.owned = p.size();
     const int every = state_.world.reorder_every;
     auto build = [&] {
-      grid_.build(raw<Vec3>(p.position), raw<ParticleId>(p.id), raw<ParticleType>(p.type), n);
+      grid_.build(raw<Vec3>(p.position), raw<ParticleId>(p.id), raw<ParticleType>(p.type),
+                  p.size());
     };
     if (every > 0 && step_count % std::uint64_t(every) == 0) {
       build();
       p.permute(grid_.sorted_order());
     }
+    if (state_.ghosts) images_.append(p, &state_.boundary_force, &state_.liquid_force);
     build();
     state_.lists.update(grid_, raw<ParticleType>(p.type));
   }
@@ -222,6 +237,7 @@ class SolverPipeline final : public DevicePipeline {
   DeviceParticles<Backend> last_good_;
   DeviceGrid<Backend> grid_;
   DeviceBodies<Backend> bodies_;
+  DeviceImages<Backend> images_;
   std::vector<std::unique_ptr<SolverPart<Backend>>> parts_;
   int guard_list_ = -1;
   int threads_;

@@ -75,10 +75,6 @@ void check_periodic_scene(JsonInput& in, const PeriodicBounds& box, const SceneD
                  "bodies in a periodic domain are not supported yet (a body's "
                  "particles would be wrapped one by one); remove \"periodic\" or the "
                  "bodies");
-  if (scene.device != "cpu")
-    in.problem("/device", "'" + scene.device +
-                              "': a periodic domain runs on the CPU (and across MPI ranks); the "
-                              "device pipeline does not wrap particles yet");
 }
 
 PeriodicBounds read_periodic(JsonInput& in, const json& doc, SceneDescription& scene) {

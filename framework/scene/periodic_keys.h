@@ -24,8 +24,8 @@ struct PeriodicBounds {
 PeriodicBounds read_periodic(JsonInput& in, const nlohmann::json& doc, SceneDescription& scene);
 
 // Once the materials, containers, fluid blocks and sections are read: containers span the period
-// along a periodic axis (their walls there are left out), fluid blocks lie inside it, and grains,
-// bodies and a device pipeline are refused (not built for periodic domains yet).
+// along a periodic axis (their walls there are left out), fluid blocks lie inside it, and grains
+// and bodies are refused (not built for periodic domains yet).
 void check_periodic_scene(JsonInput& in, const PeriodicBounds& bounds,
                           const SceneDescription& scene);
 

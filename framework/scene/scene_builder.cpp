@@ -58,7 +58,8 @@ std::unique_ptr<World> build_world(const SceneDescription& scene, const Registry
   for (const auto& c : scene.containers) {
     const std::size_t first = p.size();
     add_container_walls(p, c.box, h, c.layers, *world->materials().find(c.material),
-                        scene.world.periodic.periodic);
+                        {scene.world.periodic.periodic[0], scene.world.periodic.periodic[1],
+                         scene.world.periodic.periodic[2]});
     world->add_container(
         {to_vec3(c.box.min), to_vec3(c.box.max), *world->materials().find(c.material)});
     // Lattice walls have a known volume per particle: the (slightly stretched) lattice cell.

@@ -5,10 +5,8 @@
 
 namespace upf {
 
-PeriodicDomain::PeriodicDomain(const PeriodicBox& box, Real reach)
-    // A little beyond the support radius: a neighbour at exactly the radius must not be lost to
-    // the rounding of the shifted position.
-    : box_(box), reach_(reach * Real(1.0001)) {}
+PeriodicDomain::PeriodicDomain(const PeriodicBox& box, Real support_radius)
+    : box_(box), reach_(periodic_image_reach(support_radius)) {}
 
 void PeriodicDomain::distribute(Particles& particles, CouplingArrays& coupling) {
   particles_ = &particles;

@@ -25,8 +25,8 @@ void shift_ghost_positions(Particles& particles, const std::vector<Vec3>& shifts
 
 class PeriodicDomain final : public ParticleDomain {
  public:
-  // `reach`: how far past a face images reach (the support radius).
-  PeriodicDomain(const PeriodicBox& box, Real reach);
+  // Images reach periodic_image_reach(support_radius) past a face.
+  PeriodicDomain(const PeriodicBox& box, Real support_radius);
 
   int rank() const override { return 0; }
   int ranks() const override { return 1; }

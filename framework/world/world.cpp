@@ -282,10 +282,6 @@ void World::set_domain(std::unique_ptr<ParticleDomain> domain) {
 
 void World::set_device(std::unique_ptr<DevicePipeline> pipeline) {
   if (!prepared_) throw std::logic_error("World::prepare() must run before World::set_device()");
-  if (pipeline && settings_.periodic.any())
-    throw InputError("/periodic",
-                     "a periodic domain runs on the CPU (and across MPI ranks); the device "
-                     "pipeline does not wrap particles yet: run it without --device");
   sync_host();
   device_ = std::move(pipeline);
   device_stale_ = device_ != nullptr;

@@ -54,12 +54,12 @@ void DfsphSolver::prepare(World& world) {
   Particles& p = world.particles();
   density_stiffness_ = p.declare_scalar(kDensityStiffness);
   divergence_stiffness_ = p.declare_scalar(kDivergenceStiffness);
-  factor_ = p.declare_scratch_scalar("dfsph.factor");
-  boundary_divergence_ = p.declare_scratch_scalar("dfsph.boundary_divergence");
-  rho_adv_ = p.declare_scratch_scalar("dfsph.advected_density");
-  k_ = p.declare_scratch_scalar("dfsph.stiffness");
-  k_total_ = p.declare_scratch_scalar("dfsph.total_stiffness");
-  v_star_ = p.declare_scratch_vector("dfsph.predicted_velocity");
+  factor_ = p.declare_scratch_scalar(kDfsphFactorField);
+  boundary_divergence_ = p.declare_scratch_scalar(kDfsphBoundaryDivergenceField);
+  rho_adv_ = p.declare_scratch_scalar(kDfsphAdvectedDensityField);
+  k_ = p.declare_scratch_scalar(kDfsphStiffnessField);
+  k_total_ = p.declare_scratch_scalar(kDfsphTotalStiffnessField);
+  v_star_ = p.declare_scratch_vector(kDfsphPredictedVelocityField);
   reference_speed_ = free_fall_speed(world);
 }
 

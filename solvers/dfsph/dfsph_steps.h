@@ -36,6 +36,15 @@ struct DfsphArrays {
   Vec3* v_star;
 };
 
+// The scratch fields that hold the work arrays (DfsphSolver declares them; the device pipeline
+// binds the same ones), so ghosts and periodic images carry them as they carry any field.
+inline constexpr const char* kDfsphFactorField = "dfsph.factor";
+inline constexpr const char* kDfsphBoundaryDivergenceField = "dfsph.boundary_divergence";
+inline constexpr const char* kDfsphAdvectedDensityField = "dfsph.advected_density";
+inline constexpr const char* kDfsphStiffnessField = "dfsph.stiffness";
+inline constexpr const char* kDfsphTotalStiffnessField = "dfsph.total_stiffness";
+inline constexpr const char* kDfsphPredictedVelocityField = "dfsph.predicted_velocity";
+
 struct DfsphSettings {
   double eta, eta_divergence;
   int min_iterations, max_iterations, max_divergence_iterations;

@@ -11,13 +11,13 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   Particles& p = world.particles();
   density_field = p.declare_scalar("density", 0, true);
   pressure_field = p.declare_scalar("pressure", 0, true);
-  pressure_acceleration_field = p.declare_scratch_vector("fluid.pressure_acceleration");
+  pressure_acceleration_field = p.declare_scratch_vector(kPressureAccelerationField);
   lists.request(world);
   // Reactions are gathered from the rigid side: for each rigid particle, its liquid neighbours.
   if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)
     reaction_list = world.request_neighbours(mask_of(ParticleType::Rigid), kLiquidMask);
   table.load(world, materials);
-  if (surface_tension()) surface_normal_field = p.declare_scratch_vector("fluid.surface_normal");
+  if (surface_tension()) surface_normal_field = p.declare_scratch_vector(kSurfaceNormalField);
   owned.set_materials(world.materials().size(), materials);
   bool wall_friction = false;
   for (MaterialId m : materials) wall_friction = wall_friction || table.boundary_viscosity[m] > 0;

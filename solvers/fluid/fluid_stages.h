@@ -14,6 +14,11 @@
 
 namespace upf {
 
+// Scratch fields every fluid solver declares (FluidSolverState::prepare) and the device pipeline
+// binds: ghosts and periodic images carry them, and neighbours read the normals.
+inline constexpr const char* kPressureAccelerationField = "fluid.pressure_acceleration";
+inline constexpr const char* kSurfaceNormalField = "fluid.surface_normal";
+
 // Density and kernel gradients at the current positions (fluid_forces.h), and with
 // `surface_normal` not null Akinci's surface normals, which the surface tension of i's neighbours
 // reads (surface_forces.h).
@@ -138,10 +143,9 @@ ImplicitViscosityStats run_non_pressure_stages(const Executor& exec, ParticleRan
     exec.run(owned, AddForceOverMassStage{a.liquid_force, f.mass, a.other_acceleration});
   if (!viscous.arrays) return {};
   const ImplicitViscosityStats stats = solve_implicit_viscosity(
-      exec, owned, viscous.all, f, viscous.owns, a.density, a.fluid_gradient,
-      a.other_acceleration, *viscous.arrays, viscous.settings, viscous.dt);
-  if (!stats.converged)
-    throw ConvergenceError(implicit_viscosity_failure(stats, viscous.settings));
+      exec, owned, viscous.all, f, viscous.owns, a.density, a.fluid_gradient, a.other_acceleration,
+      *viscous.arrays, viscous.settings, viscous.dt);
+  if (!stats.converged) throw ConvergenceError(implicit_viscosity_failure(stats, viscous.settings));
   return stats;
 }
 

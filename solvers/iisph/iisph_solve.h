@@ -35,6 +35,15 @@ struct IisphArrays {
   Vec3* v_adv;
 };
 
+// The scratch fields that hold the work arrays (IisphSolver declares them; the device pipeline
+// binds the same ones), so ghosts and periodic images carry them as they carry any field.
+inline constexpr const char* kIisphInverseDiagonalField = "iisph.inverse_diagonal";
+inline constexpr const char* kIisphBoundaryDivergenceField = "iisph.boundary_divergence";
+inline constexpr const char* kIisphAdvectedDensityField = "iisph.advected_density";
+inline constexpr const char* kIisphPredictedDensityField = "iisph.predicted_density";
+inline constexpr const char* kIisphNextPressureField = "iisph.next_pressure";
+inline constexpr const char* kIisphAdvectedVelocityField = "iisph.advected_velocity";
+
 struct IisphSettings {
   double eta;
   int min_iterations, max_iterations;

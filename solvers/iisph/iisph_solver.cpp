@@ -37,12 +37,12 @@ IisphSolver::IisphSolver(const IisphParams& params, std::vector<MaterialId> mate
 void IisphSolver::prepare(World& world) {
   fluid_.prepare(world, materials_);
   Particles& p = world.particles();
-  inverse_diagonal_ = p.declare_scratch_scalar("iisph.inverse_diagonal");
-  boundary_divergence_ = p.declare_scratch_scalar("iisph.boundary_divergence");
-  rho_adv_ = p.declare_scratch_scalar("iisph.advected_density");
-  predicted_ = p.declare_scratch_scalar("iisph.predicted_density");
-  next_ = p.declare_scratch_scalar("iisph.next_pressure");
-  v_adv_ = p.declare_scratch_vector("iisph.advected_velocity");
+  inverse_diagonal_ = p.declare_scratch_scalar(kIisphInverseDiagonalField);
+  boundary_divergence_ = p.declare_scratch_scalar(kIisphBoundaryDivergenceField);
+  rho_adv_ = p.declare_scratch_scalar(kIisphAdvectedDensityField);
+  predicted_ = p.declare_scratch_scalar(kIisphPredictedDensityField);
+  next_ = p.declare_scratch_scalar(kIisphNextPressureField);
+  v_adv_ = p.declare_scratch_vector(kIisphAdvectedVelocityField);
   reference_speed_ = free_fall_speed(world);
 }
 

@@ -16,7 +16,38 @@ std::string contents(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-class DeviceCli : public Cli {};
+// Every frame of run `a` has a byte-identical twin in run `b`; returns how many there are.
+int expect_same_frames(const fs::path& a, const fs::path& b) {
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(a / "frames")) {
+    const fs::path other = b / "frames" / entry.path().filename();
+    EXPECT_TRUE(fs::exists(other)) << other;
+    EXPECT_TRUE(contents(entry.path()) == contents(other)) << entry.path().filename();
+    ++frames;
+  }
+  return frames;
+}
+
+class DeviceCli : public Cli {
+ protected:
+  // `upf run scene` with `options` into cpu_dir(), then with --device omp into omp_dir(); false
+  // (and a failure) when either run fails.
+  bool run_on_cpu_and_omp(const std::string& scene, const std::string& options) {
+    const Result a = run_upf("run " + scene + options + " --out " + cpu_dir().string());
+    EXPECT_EQ(a.code, 0) << a.output;
+    const Result b =
+        run_upf("run " + scene + options + " --device omp --out " + omp_dir().string());
+    EXPECT_EQ(b.code, 0) << b.output;
+    return a.code == 0 && b.code == 0;
+  }
+  std::string sample_scene(const std::string& name) {
+    std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / name);
+    return write(nlohmann::json::parse(in));
+  }
+  // Set up by Cli::SetUp.
+  fs::path cpu_dir() const { return dir_ / "cpu"; }
+  fs::path omp_dir() const { return dir_ / "omp"; }
+};
 
 TEST_F(DeviceCli, OmpWritesTheCpuRunsFramesProbesAndMetricsByteForByte) {
   const std::string scene = write(sample());
@@ -26,14 +57,7 @@ TEST_F(DeviceCli, OmpWritesTheCpuRunsFramesProbesAndMetricsByteForByte) {
   const Result b =
       run_upf("run " + scene + " -q -j 2 --end 0.15 --device omp --out " + omp.string());
   ASSERT_EQ(b.code, 0) << b.output;
-  int frames = 0;
-  for (const auto& entry : fs::directory_iterator(cpu / "frames")) {
-    const fs::path other = omp / "frames" / entry.path().filename();
-    ASSERT_TRUE(fs::exists(other)) << other;
-    EXPECT_TRUE(contents(entry.path()) == contents(other)) << entry.path().filename();
-    ++frames;
-  }
-  EXPECT_GE(frames, 5);
+  EXPECT_GE(expect_same_frames(cpu, omp), 5);
   EXPECT_EQ(contents(cpu / "probes.csv"), contents(omp / "probes.csv"));
   // metrics.csv: the same columns up to the timings, which differ run to run.
   std::ifstream ma(cpu / "metrics.csv"), mb(omp / "metrics.csv");
@@ -54,17 +78,10 @@ TEST_F(DeviceCli, OmpWritesTheCpuRunsFramesProbesAndMetricsByteForByte) {
 // Grains: the frames (with the contact load field) and the table of the walls' forces
 // (dem_linear_walls.csv) are the CPU run's, byte for byte.
 TEST_F(DeviceCli, OmpWritesTheCpuRunsGrainFramesAndWallForces) {
-  std::ifstream in(fs::path(UPF_SOURCE_DIR) / "samples" / "sand_pile.json");
-  const std::string scene = write(nlohmann::json::parse(in));
-  const fs::path cpu = dir_ / "cpu", omp = dir_ / "omp";
-  const std::string opts = " -q -j 1 --end 0.1 --set /output/fps=100 --out ";
-  const Result a = run_upf("run " + scene + opts + cpu.string());
-  ASSERT_EQ(a.code, 0) << a.output;
-  const Result b = run_upf("run " + scene + opts + omp.string() + " --device omp");
-  ASSERT_EQ(b.code, 0) << b.output;
-  for (const auto& entry : fs::directory_iterator(cpu / "frames"))
-    EXPECT_TRUE(contents(entry.path()) == contents(omp / "frames" / entry.path().filename()))
-        << entry.path().filename();
+  ASSERT_TRUE(run_on_cpu_and_omp(sample_scene("sand_pile.json"),
+                                 " -q -j 1 --end 0.1 --set /output/fps=100"));
+  const fs::path cpu = cpu_dir(), omp = omp_dir();
+  EXPECT_GE(expect_same_frames(cpu, omp), 10);
   EXPECT_NE(contents(cpu / "frames" / "frame_00010.vtp").find("dem.contact_load"),
             std::string::npos);
   const std::string walls = contents(cpu / "dem_linear_walls.csv");
@@ -75,6 +92,15 @@ TEST_F(DeviceCli, OmpWritesTheCpuRunsGrainFramesAndWallForces) {
       << walls.substr(0, 200);
   EXPECT_GT(std::count(walls.begin(), walls.end(), '\n'), 20);
   EXPECT_EQ(walls, contents(omp / "dem_linear_walls.csv"));
+}
+
+// A periodic scene (docs/periodic.md): its images live on the device during each step, and the
+// frames (in id order) and probes are the CPU run's, byte for byte.
+TEST_F(DeviceCli, OmpWritesThePeriodicDamBreaksFramesAndProbesByteForByte) {
+  ASSERT_TRUE(run_on_cpu_and_omp(sample_scene("periodic_dam_break.json"),
+                                 " -q -j 2 --end 0.3 --set /particle_spacing=0.04"));
+  EXPECT_GE(expect_same_frames(cpu_dir(), omp_dir()), 9);
+  EXPECT_EQ(contents(cpu_dir() / "probes.csv"), contents(omp_dir() / "probes.csv"));
 }
 
 // The scene's "device" key picks the device when --device does not; its errors name the key.
