@@ -30,9 +30,11 @@ struct Material {
   std::string solver;  // empty when nothing moves it
   ParamValues solver_params;
   // Liquids: the surface tension model (scene key "surface_tension_model"; empty: the first one
-  // registered) and Akinci's adhesion coefficient toward each named boundary material ("adhesion").
+  // registered) and Akinci's adhesion coefficient toward each named boundary material ("adhesion",
+  // or from "contact_angle", whose degrees are kept beside it).
   std::string surface_tension_model;
   std::map<std::string, double> adhesion;
+  std::map<std::string, double> contact_angle;
 
   double param(const std::string& n) const { return params.get(n); }
 };

@@ -1,5 +1,8 @@
 #include "framework/scene/surface_tension_keys.h"
 
+#include "framework/materials/adhesion_contact_angle.h"
+#include "framework/params/param_table_markdown.h"
+
 namespace upf {
 
 using nlohmann::json;
@@ -36,12 +39,37 @@ void read_surface_tension_keys(JsonInput& in, const json& node, const std::strin
     }
   }
   auto it = node.find("adhesion");
-  if (it == node.end()) return;
-  const std::string where = JsonInput::child(path, "adhesion");
-  if (!in.expect_object(*it, where)) return;
-  for (auto pair = it->begin(); pair != it->end(); ++pair) {
-    if (auto ratio = in.required_number(*it, where, pair.key(), 0, kMaxAdhesionRatio))
-      m.adhesion[pair.key()] = *ratio;
+  if (it != node.end() && in.expect_object(*it, JsonInput::child(path, "adhesion"))) {
+    const std::string where = JsonInput::child(path, "adhesion");
+    for (auto pair = it->begin(); pair != it->end(); ++pair) {
+      if (auto ratio = in.required_number(*it, where, pair.key(), 0, kMaxAdhesionRatio))
+        m.adhesion[pair.key()] = *ratio;
+    }
+  }
+  // The same wetting asked for as an equilibrium contact angle (adhesion_contact_angle.h).
+  auto angles = node.find("contact_angle");
+  if (angles == node.end()) return;
+  const std::string where = JsonInput::child(path, "contact_angle");
+  if (!in.expect_object(*angles, where)) return;
+  for (auto pair = angles->begin(); pair != angles->end(); ++pair) {
+    const std::string at = JsonInput::child(where, pair.key());
+    auto degrees = in.required_number(*angles, where, pair.key(), 0, 180, false, "degrees");
+    if (!degrees) continue;
+    if (*degrees < kSmallestContactAngle) {
+      in.problem(at, compact_number(*degrees) +
+                         " degrees: Akinci's adhesion reaches contact angles "
+                         "from " +
+                         compact_number(kSmallestContactAngle) + " to " +
+                         compact_number(kLargestContactAngle) +
+                         " degrees; past that the liquid wets completely, running up the walls "
+                         "as a film (docs/surface-tension.md)");
+    } else if (m.adhesion.count(pair.key())) {
+      in.problem(at, "'" + pair.key() + "' has an adhesion ratio too (" + path + "/adhesion/" +
+                         pair.key() + "): give one of the two");
+    } else {
+      m.contact_angle[pair.key()] = *degrees;
+      m.adhesion[pair.key()] = adhesion_ratio_for_contact_angle(*degrees);
+    }
   }
 }
 
@@ -51,7 +79,8 @@ void check_surface_tension_keys(JsonInput& in, const Registry& registry,
     if (m.type != ParticleType::Liquid) continue;
     const std::string path = "/materials/" + m.name;
     for (const auto& [name, ratio] : m.adhesion) {
-      const std::string where = path + "/adhesion/" + name;
+      const std::string where =
+          path + (m.contact_angle.count(name) ? "/contact_angle/" : "/adhesion/") + name;
       const Material* other = scene.material(name);
       if (!other && scene.rejected(name)) continue;  // its own problem is reported already
       if (!other) {
@@ -70,10 +99,11 @@ void check_surface_tension_keys(JsonInput& in, const Registry& registry,
       }
     }
     if (!m.adhesion.empty() && m.param("surface_tension") <= 0)
-      in.problem(path + "/adhesion",
-                 "adhesion is a ratio to the surface tension's cohesion, and surface_tension is 0: "
-                 "set /materials/" +
-                     m.name + "/surface_tension (N/m, water 0.0728)");
+      in.problem(
+          path + (m.contact_angle.size() == m.adhesion.size() ? "/contact_angle" : "/adhesion"),
+          "adhesion is a ratio to the surface tension's cohesion, and surface_tension is 0: "
+          "set /materials/" +
+              m.name + "/surface_tension (N/m, water 0.0728)");
   }
   // One solver instance, one model: a pair of its liquids must not meet two force laws.
   for (std::size_t a = 0; a < scene.materials.size(); ++a)

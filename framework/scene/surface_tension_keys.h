@@ -1,7 +1,8 @@
 // The liquid keys of surface tension beside the numeric `surface_tension` (sigma, a parameter of
-// the liquid kind): "surface_tension_model", a model's registered name, and "adhesion", an object
-// of Akinci's adhesion over cohesion ratio beta/gamma toward each named boundary material
-// (docs/surface-tension.md).
+// the liquid kind): "surface_tension_model", a model's registered name, "adhesion", an object
+// of Akinci's adhesion over cohesion ratio beta/gamma toward each named boundary material, and
+// "contact_angle", the same wetting asked for as an equilibrium contact angle in degrees per
+// boundary material (adhesion_contact_angle.h; docs/surface-tension.md).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -16,11 +17,12 @@
 namespace upf {
 
 inline const std::vector<std::string>& surface_tension_keys() {
-  static const std::vector<std::string> keys = {"surface_tension_model", "adhesion"};
+  static const std::vector<std::string> keys = {"surface_tension_model", "adhesion",
+                                                "contact_angle"};
   return keys;
 }
 
-// Reads the two keys of liquid material `m` at `path` (the material's JSON path).
+// Reads the three keys of liquid material `m` at `path` (the material's JSON path).
 void read_surface_tension_keys(JsonInput& in, const nlohmann::json& node, const std::string& path,
                                const Registry& registry, Material& m);
 

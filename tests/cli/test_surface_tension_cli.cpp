@@ -33,6 +33,26 @@ TEST_F(Cli, AdhesionMustNameABoundaryMaterialWithinRange) {
   expect_rejected(doc, {"/materials/water/adhesion/walls", "out of range"});
 }
 
+// A contact angle beyond the adhesion's reach, one given beside a ratio for the same material, a
+// name that is not a boundary: each named with its JSON path (adhesion_contact_angle.h).
+TEST_F(Cli, ContactAngleMustBeReachableAndNotBesideARatio) {
+  auto doc = sample();
+  doc["materials"]["water"]["surface_tension"] = 0.07;
+  doc["materials"]["water"]["contact_angle"] = {{"walls", 60}};
+  expect_rejected(doc, {"/materials/water/contact_angle/walls", "60 degrees",
+                        "from 85 to 180 degrees", "wets completely"});
+  doc["materials"]["water"]["contact_angle"] = {{"walls", 200}};
+  expect_rejected(doc, {"/materials/water/contact_angle/walls", "out of range"});
+  doc["materials"]["water"]["contact_angle"] = {{"walls", 120}};
+  doc["materials"]["water"]["adhesion"] = {{"walls", 4}};
+  expect_rejected(doc, {"/materials/water/contact_angle/walls", "has an adhesion ratio too"});
+  doc["materials"]["water"].erase("adhesion");
+  doc["materials"]["water"]["contact_angle"] = {{"wals", 120}};
+  expect_rejected(doc, {"/materials/water/contact_angle/wals", "did you mean 'walls'"});
+  doc["materials"]["water"]["contact_angle"] = {{"walls", 120}};
+  EXPECT_EQ(run_upf("validate " + write(doc)).code, 0);
+}
+
 TEST_F(Cli, AdhesionWithoutSurfaceTensionSaysWhatToSet) {
   auto doc = sample();
   doc["materials"]["water"]["adhesion"] = {{"walls", 1.0}};
