@@ -39,6 +39,11 @@ class DfsphMethod {
     k_ = &p.scalar_array(kDfsphStiffnessField);
     k_total_ = &p.scalar_array(kDfsphTotalStiffnessField);
     v_star_ = &p.vector_array(kDfsphPredictedVelocityField);
+    if (setup_.solve.summed_density_check) {
+      x_star_ = &p.vector_array(kDfsphPredictedPositionField);
+      rho_star_ = &p.scalar_array(kDfsphSummedDensityField);
+      rho_base_ = &p.scalar_array(kDfsphBaseDensityField);
+    }
   }
 
   template <class Executor, class Step>
@@ -82,21 +87,27 @@ class DfsphMethod {
 
   template <class Step>
   DfsphArrays arrays(const Step& s) {
-    return {s.f,
-            s.owned,
-            s.n,
-            s.fluid_gradient,
-            s.boundary_gradient,
-            s.other_acceleration,
-            s.density,
-            raw<Real>(*density_stiffness_),
-            raw<Real>(*divergence_stiffness_),
-            raw<Real>(*factor_),
-            raw<Real>(*boundary_divergence_),
-            raw<Real>(*rho_adv_),
-            raw<Real>(*k_),
-            raw<Real>(*k_total_),
-            raw<Vec3>(*v_star_)};
+    DfsphArrays a{s.f,
+                  s.owned,
+                  s.n,
+                  s.fluid_gradient,
+                  s.boundary_gradient,
+                  s.other_acceleration,
+                  s.density,
+                  raw<Real>(*density_stiffness_),
+                  raw<Real>(*divergence_stiffness_),
+                  raw<Real>(*factor_),
+                  raw<Real>(*boundary_divergence_),
+                  raw<Real>(*rho_adv_),
+                  raw<Real>(*k_),
+                  raw<Real>(*k_total_),
+                  raw<Vec3>(*v_star_)};
+    if (x_star_) {
+      a.x_star = raw<Vec3>(*x_star_);
+      a.rho_star = raw<Real>(*rho_star_);
+      a.rho_base = raw<Real>(*rho_base_);
+    }
+    return a;
   }
 
   DfsphSetup setup_;
@@ -104,6 +115,8 @@ class DfsphMethod {
   vector<Real>*factor_ = nullptr, *boundary_divergence_ = nullptr, *rho_adv_ = nullptr,
   *k_ = nullptr, *k_total_ = nullptr;
   vector<Vec3>* v_star_ = nullptr;
+  vector<Vec3>* x_star_ = nullptr;  // with the summed density check only
+  vector<Real>*rho_star_ = nullptr, *rho_base_ = nullptr;
   vector<Real>* density_stiffness_ = nullptr;
   vector<Real>* divergence_stiffness_ = nullptr;
 };

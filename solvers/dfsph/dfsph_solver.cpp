@@ -40,6 +40,13 @@ ParamBinding<DfsphParams> DfsphSolver::param_binding() {
          "1: each solver starts from the previous step's stiffness, as the paper does"},
         &DfsphParams::warm_start);
   b.add(stop_percentile_spec(), &DfsphParams::stop_percentile);
+  b.add({"summed_density_check", "1", 0, 0, 1,
+         "1: once the constant-density solve has converged on its linear prediction, sum the "
+         "densities where the step leaves the particles (x + dt v*, as PCISPH predicts) and, while "
+         "their stopping error exceeds eta, re-base the prediction on them and iterate on (a "
+         "density sum per round); with stop_percentile 100 the largest compression at the "
+         "particles then stays near eta (docs/solvers.md)"},
+        &DfsphParams::summed_density_check);
   b.add(wall_pressure_spec(), &DfsphParams::wall_pressure);
   return b;
 }
@@ -60,6 +67,11 @@ void DfsphSolver::prepare(World& world) {
   k_ = p.declare_scratch_scalar(kDfsphStiffnessField);
   k_total_ = p.declare_scratch_scalar(kDfsphTotalStiffnessField);
   v_star_ = p.declare_scratch_vector(kDfsphPredictedVelocityField);
+  if (params_.summed_density_check) {
+    x_star_ = p.declare_position_vector(kDfsphPredictedPositionField);
+    rho_star_ = p.declare_scratch_scalar(kDfsphSummedDensityField);
+    rho_base_ = p.declare_scratch_scalar(kDfsphBaseDensityField);
+  }
   reference_speed_ = free_fall_speed(world);
 }
 
@@ -73,21 +85,27 @@ std::vector<std::string> DfsphSolver::stages() const {
 
 DfsphArrays DfsphSolver::arrays(World& world, const FluidView& f, const Real* density) {
   Particles& p = world.particles();
-  return {f,
-          fluid_.owned.range(),
-          p.size(),
-          fluid_.fluid_gradient.data(),
-          fluid_.boundary_gradient.data(),
-          fluid_.other_acceleration.data(),
-          density,
-          p[density_stiffness_].data(),
-          p[divergence_stiffness_].data(),
-          p[factor_].data(),
-          p[boundary_divergence_].data(),
-          p[rho_adv_].data(),
-          p[k_].data(),
-          p[k_total_].data(),
-          p[v_star_].data()};
+  DfsphArrays a{f,
+                fluid_.owned.range(),
+                p.size(),
+                fluid_.fluid_gradient.data(),
+                fluid_.boundary_gradient.data(),
+                fluid_.other_acceleration.data(),
+                density,
+                p[density_stiffness_].data(),
+                p[divergence_stiffness_].data(),
+                p[factor_].data(),
+                p[boundary_divergence_].data(),
+                p[rho_adv_].data(),
+                p[k_].data(),
+                p[k_total_].data(),
+                p[v_star_].data()};
+  if (params_.summed_density_check) {
+    a.x_star = p[x_star_].data();
+    a.rho_star = p[rho_star_].data();
+    a.rho_base = p[rho_base_].data();
+  }
+  return a;
 }
 
 DfsphSettings DfsphSolver::settings() const {
@@ -99,7 +117,8 @@ DfsphSettings DfsphSolver::settings() const {
           params_.divergence,
           params_.warm_start,
           params_.omega,
-          stopping_.is_average()};
+          stopping_.is_average(),
+          params_.summed_density_check};
 }
 
 void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
@@ -110,8 +129,8 @@ void DfsphSolver::step(World& world, Real dt, StageRunner& run) {
   DfsphArrays a{};
   stats_ = SolverStats{};
   const DfsphSettings s = settings();
-  auto stopping_error = [&](const CompressionValue&) {
-    return stopping_(exec, fluid_.owned, f, p[rho_adv_].data());
+  auto stopping_error = [&](const CompressionValue& value) {
+    return stopping_(exec, fluid_.owned, f, value.density);
   };
 
   run("non_pressure", [&] {

@@ -45,9 +45,10 @@ struct DfsphParams {
   int max_divergence_iterations = 0;
   bool divergence = true;  // run the divergence-free solver
   bool warm_start = true;
-  double omega = 0;            // relaxation of the Jacobi update
-  double stop_percentile = 0;  // the constant-density solver's StoppingError: 0 the average
-  double wall_pressure = 0;    // boundary_pressure.h: 1 on, 0 Akinci's term alone
+  double omega = 0;                   // relaxation of the Jacobi update
+  double stop_percentile = 0;         // the constant-density solver's StoppingError: 0 the average
+  double wall_pressure = 0;           // boundary_pressure.h: 1 on, 0 Akinci's term alone
+  bool summed_density_check = false;  // dfsph_summed_density.h
 };
 
 class DfsphSolver final : public Solver {
@@ -87,7 +88,9 @@ class DfsphSolver final : public Solver {
   // neighbours read them, and ghosts on other ranks must carry them (particle_domain.h).
   FieldHandle<Real> factor_, boundary_divergence_, rho_adv_, k_, k_total_;
   FieldHandle<Vec3> v_star_;
-  Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
+  FieldHandle<Vec3> x_star_;               // with summed_density_check only
+  FieldHandle<Real> rho_star_, rho_base_;  // likewise
+  Real reference_speed_ = 0;               // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
   int divergence_iterations_ = 0;
   double divergence_error_ = 0;

@@ -76,6 +76,14 @@ struct VelocityKickStage {
   UPF_HD void operator()(std::uint32_t i) const { v[i] += a[i] * dt; }
 };
 
+// Copies one scalar array into another (IISPH's last Jacobi buffer into the pressure field, DFSPH's
+// density into the base its summed check re-bases).
+struct CopyScalarStage {
+  const Real* from;
+  Real* to;
+  UPF_HD void operator()(std::uint32_t i) const { to[i] = from[i]; }
+};
+
 // Copies every particle's velocity into a working array.
 struct CopyVelocityStage {
   const Vec3* v;

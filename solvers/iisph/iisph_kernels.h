@@ -102,11 +102,4 @@ struct IisphPressureUpdateStage {
   }
 };
 
-// Copies one scalar array into another (the last Jacobi buffer into the pressure field).
-struct CopyScalarStage {
-  const Real* from;
-  Real* to;
-  UPF_HD void operator()(std::uint32_t i) const { to[i] = from[i]; }
-};
-
 }  // namespace upf

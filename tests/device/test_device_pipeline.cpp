@@ -121,6 +121,10 @@ TEST(DevicePipelineOmp, DfsphDamBreakIsBitwiseTheCpuPath) {
   doc["materials"]["water"]["solver"] = {
       {"name", "dfsph"}, {"divergence", 0}, {"warm_start", 0}, {"stop_percentile", 95}};
   expect_parity(doc, 40);
+  // Checked against densities summed at the predicted positions (dfsph_summed_density.h).
+  doc["materials"]["water"]["solver"] = {
+      {"name", "dfsph"}, {"stop_percentile", 100}, {"summed_density_check", 1}};
+  expect_parity(doc, 60);
 }
 
 TEST(DevicePipelineOmp, PercentileStoppingTestIsBitwiseTheCpuPath) {
