@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <thrust/gather.h>
 #include <thrust/scan.h>
 
 #include "device/device_particles.h"
@@ -65,13 +66,6 @@ struct ShiftImagesStage {
   UPF_HD void operator()(std::size_t k) const { x[k] = PeriodicBox::shifted(x[k], shifts[k]); }
 };
 
-struct CopyToImagesStage {
-  const std::uint32_t* sources;
-  Vec3* values;  // a coupling array
-  std::size_t first;
-  UPF_HD void operator()(std::size_t k) const { values[first + k] = values[sources[k]]; }
-};
-
 }  // namespace images_detail
 
 template <class Backend>
@@ -116,9 +110,8 @@ class DeviceImages final : public DeviceGhosts {
     shift_images();
     for (vector<Vec3>* values : coupling_)
       if (values && values->size() == particles_->size())
-        for_each_index<Backend>(sources_.size(),
-                                images_detail::CopyToImagesStage{raw<std::uint32_t>(sources_),
-                                                                 raw<Vec3>(*values), owned_});
+        thrust::gather(Backend::policy(), sources_.begin(), sources_.end(), values->begin(),
+                       values->begin() + std::ptrdiff_t(owned_));
   }
 
   // Back to the owned particles (PeriodicDomain::drop_ghosts).

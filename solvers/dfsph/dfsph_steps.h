@@ -113,32 +113,6 @@ inline DfsphStiffnessStage dfsph_measure(const DfsphArrays& a, const DfsphSettin
           a.k};
 }
 
-template <class Executor, class StoppingErrorOf>
-std::pair<int, double> dfsph_iterate(const Executor& exec, const DfsphArrays& a,
-                                     const DfsphSettings& s, Real dt, bool divergence,
-                                     StoppingErrorOf&& stopping_error, int iteration);
-
-// Corrects v* until the solve's error is below eta (the divergence-free solve when `divergence`,
-// else the constant-density one); the error is stopping_error(value) over rho_adv's
-// CompressionValue. Returns {iterations, error}.
-template <class Executor, class StoppingErrorOf>
-std::pair<int, double> dfsph_correct(const Executor& exec, const DfsphArrays& a,
-                                     const DfsphSettings& s, Real dt, bool divergence,
-                                     StoppingErrorOf&& stopping_error) {
-  Real* stiffness = divergence ? a.divergence_stiffness : a.density_stiffness;
-  const Real dt_power = divergence ? dt : dt * dt;
-  const DfsphVelocityStage update{a.f, a.fluid_gradient, a.boundary_gradient, a.k, dt, a.v_star};
-  const DfsphStiffnessStage measure = dfsph_measure(a, s, dt, divergence);
-  if (s.warm_start) {
-    exec.run(a.owned, measure);
-    exec.run(a.owned, DfsphWarmStartStage{a.f, a.rho_adv, dt_power, stiffness, a.k, a.k_total});
-    exec.run(a.owned, update);
-  } else {
-    exec.run(a.owned, ClearStiffnessStage{stiffness});
-  }
-  return dfsph_iterate(exec, a, s, dt, divergence, stopping_error, 0);
-}
-
 // The solve's iterations from `iteration` on: rho_adv and K measured, then accumulate, update and
 // measure until the error is below eta. Returns {iterations, error}.
 template <class Executor, class StoppingErrorOf>
@@ -171,6 +145,27 @@ std::pair<int, double> dfsph_iterate(const Executor& exec, const DfsphArrays& a,
     ++iteration;
   }
   return {iteration, error};
+}
+
+// Corrects v* until the solve's error is below eta (the divergence-free solve when `divergence`,
+// else the constant-density one); the error is stopping_error(value) over rho_adv's
+// CompressionValue. Returns {iterations, error}.
+template <class Executor, class StoppingErrorOf>
+std::pair<int, double> dfsph_correct(const Executor& exec, const DfsphArrays& a,
+                                     const DfsphSettings& s, Real dt, bool divergence,
+                                     StoppingErrorOf&& stopping_error) {
+  Real* stiffness = divergence ? a.divergence_stiffness : a.density_stiffness;
+  const Real dt_power = divergence ? dt : dt * dt;
+  const DfsphVelocityStage update{a.f, a.fluid_gradient, a.boundary_gradient, a.k, dt, a.v_star};
+  const DfsphStiffnessStage measure = dfsph_measure(a, s, dt, divergence);
+  if (s.warm_start) {
+    exec.run(a.owned, measure);
+    exec.run(a.owned, DfsphWarmStartStage{a.f, a.rho_adv, dt_power, stiffness, a.k, a.k_total});
+    exec.run(a.owned, update);
+  } else {
+    exec.run(a.owned, ClearStiffnessStage{stiffness});
+  }
+  return dfsph_iterate(exec, a, s, dt, divergence, stopping_error, 0);
 }
 
 // The constant-density solve: v* += dt a_other, the correction, and the step's statistics.
