@@ -14,8 +14,17 @@
 namespace upf {
 
 class Particles;
+class RankCollectives;
 class StateWriter;
 class StateReader;
+
+// The step a source acts before: it starts at `time` and lasts `dt`. `ranks`: the other MPI
+// ranks' collectives when the world is split (null on one rank); every rank calls every source
+// before every step where one may change, so a source may sum over ranks (exactly, in integers).
+struct SourceStep {
+  double time = 0, dt = 0;
+  const RankCollectives* ranks = nullptr;
+};
 
 // What a source did before one step, for the metrics.
 struct SourceChange {
@@ -31,8 +40,8 @@ class ParticleSource {
   // reading the particles (an emitter knows from its clock): false lets a device pipeline keep
   // its particles where they are. Sinks, which must look, answer true.
   virtual bool may_change(double time, double dt) const = 0;
-  // Before the step from `time` of length `dt`: adds or removes particles.
-  virtual SourceChange apply(Particles& particles, double time, double dt) = 0;
+  // Before the step: adds or removes particles, or sets their velocities.
+  virtual SourceChange apply(Particles& particles, const SourceStep& step) = 0;
   // Checkpoints: the source's own state (an emitter's clock and counts).
   virtual void save_state(StateWriter&) const {}
   virtual void restore_state(StateReader&) {}

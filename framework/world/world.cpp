@@ -71,7 +71,7 @@ void World::apply_sources(double dt) {
   Particles& p = particles();
   for (const auto& s : sources_) {
     const std::size_t before = p.size();
-    const SourceChange c = s->apply(p, time_, dt);
+    const SourceChange c = s->apply(p, {time_, dt, executor_.collectives()});
     // Split over ranks, every rank runs every source alike: an emitter adds its whole layer
     // everywhere, so the id counter stays the same on every rank, and each rank keeps the new
     // particles its domain owns. Sinks take what each rank owns.

@@ -9,18 +9,57 @@
 
 namespace upf {
 
-Emitter::Emitter(EmitterDesc desc) : desc_(std::move(desc)) {}
+namespace {
 
-std::uint64_t Emitter::layers_due(double travelled) const {
-  if (!(travelled > 0)) return 0;
-  const double due = std::floor(travelled / desc_.spacing) + 1;
-  return due >= double(desc_.max_layers) ? desc_.max_layers : std::uint64_t(due);
+constexpr std::uint64_t kNoLimit = std::numeric_limits<std::uint64_t>::max();
+
+// The most layers a column of factor f places under a limit of `limit` layers of the mean flow:
+// the limit itself when f = 1.
+std::uint64_t column_limit(double f, std::uint64_t limit) {
+  if (limit == kNoLimit) return kNoLimit;
+  const double most = std::floor(f * double(limit - 1)) + 1;
+  return most >= double(kNoLimit) ? kNoLimit : std::uint64_t(most);
+}
+
+// Layers of a column of factor f due once the inflow has travelled `travelled`, at most `cap`.
+std::uint64_t column_due(double f, double travelled, double spacing, std::uint64_t cap) {
+  if (!(travelled > 0) || !(f > 0)) return 0;
+  const double due = std::floor(f * travelled / spacing) + 1;
+  return due >= double(cap) ? cap : std::uint64_t(due);
+}
+
+}  // namespace
+
+double particles_due(const EmitterDesc& desc, double travelled) {
+  double n = 0;  // a double: an absurd pour must reach the memory check, not wrap around
+  for (const Eigen::Vector3d& o : desc.opening) {
+    const double f = desc.profile.factor(o);
+    n += double(column_due(f, travelled, desc.spacing, column_limit(f, desc.max_layers)));
+  }
+  return n;
+}
+
+Emitter::Emitter(EmitterDesc desc)
+    : desc_(std::move(desc)), column_layers_(desc_.opening.size(), 0) {
+  factor_.reserve(desc_.opening.size());
+  for (const Eigen::Vector3d& o : desc_.opening) factor_.push_back(desc_.profile.factor(o));
+}
+
+std::uint64_t Emitter::layers_due(std::size_t i, double travelled) const {
+  return column_due(factor_[i], travelled, desc_.spacing,
+                    column_limit(factor_[i], desc_.max_layers));
+}
+
+bool Emitter::any_due(double travelled) const {
+  for (std::size_t i = 0; i < factor_.size(); ++i)
+    if (layers_due(i, travelled) > column_layers_[i]) return true;
+  return false;
 }
 
 bool Emitter::may_change(double time, double /*dt*/) const {
   // While it flows the buffer's velocities are set before every step.
   return (desc_.buffer > 0 && desc_.speed.at(time) > 0 && layers_ > 0) ||
-         layers_due(travelled_ + desc_.speed.distance(clock_, time)) > layers_;
+         any_due(travelled_ + desc_.speed.distance(clock_, time));
 }
 
 bool Emitter::in_buffer(const Eigen::Vector3d& x) const {
@@ -34,46 +73,60 @@ bool Emitter::in_buffer(const Eigen::Vector3d& x) const {
   return std::abs(u) <= desc_.half_width + slack && std::abs(v) <= desc_.half_height + slack;
 }
 
-SourceChange Emitter::apply(Particles& particles, double time, double /*dt*/) {
+SourceChange Emitter::apply(Particles& particles, const SourceStep& step) {
+  const double time = step.time;
   travelled_ += desc_.speed.distance(clock_, time);
   clock_ = time;
-  const std::uint64_t due = layers_due(travelled_);
   SourceChange change;
   const double speed = desc_.speed.at(time);
   if (desc_.buffer > 0 && speed > 0) {
-    const Vec3 imposed = to_vec3(desc_.direction * speed);
     for (std::size_t i = 0; i < particles.size(); ++i)
-      if (particles.type[i] == ParticleType::Liquid && particles.material[i] == desc_.material &&
-          in_buffer(to_eigen(particles.position[i])))
-        particles.velocity[i] = imposed;
+      if (particles.type[i] == ParticleType::Liquid && particles.material[i] == desc_.material) {
+        const Eigen::Vector3d x = to_eigen(particles.position[i]);
+        if (in_buffer(x))
+          particles.velocity[i] =
+              to_vec3(desc_.direction * (speed * desc_.profile.factor(x - desc_.center)));
+      }
   }
-  if (due <= layers_) return change;
-  const std::uint64_t per_layer = desc_.opening.size();
-  if (due > desc_.budget_layers)
-    throw InputError(desc_.budget_where,
-                     "emitter '" + desc_.name + "' reached its max_particles (" +
-                         std::to_string(desc_.budget_layers * per_layer) + " particles, " +
-                         std::to_string(desc_.budget_layers) +
-                         " layers) at t = " + std::to_string(time) +
-                         " s: the run stops here, the frames written so far are kept. Raise "
-                         "max_particles, or set at_limit \"close\" to stop the emitter instead");
-  const std::uint64_t new_ids = (due - layers_) * per_layer;
+  std::vector<std::uint64_t> due(factor_.size());
+  std::uint64_t first = kNoLimit, last = 0, new_ids = 0;
+  for (std::size_t i = 0; i < factor_.size(); ++i) {
+    due[i] = layers_due(i, travelled_);
+    if (due[i] <= column_layers_[i]) continue;
+    if (due[i] > column_limit(factor_[i], desc_.budget_layers))
+      throw InputError(desc_.budget_where,
+                       "emitter '" + desc_.name + "' reached its max_particles (" +
+                           std::to_string(desc_.budget_layers * desc_.opening.size()) +
+                           " particles, " + std::to_string(desc_.budget_layers) +
+                           " layers) at t = " + std::to_string(time) +
+                           " s: the run stops here, the frames written so far are kept. Raise "
+                           "max_particles, or set at_limit \"close\" to stop the emitter instead");
+    first = std::min(first, column_layers_[i]);
+    last = std::max(last, due[i]);
+    new_ids += due[i] - column_layers_[i];
+  }
+  if (new_ids == 0) return change;
   if (new_ids > std::uint64_t(std::numeric_limits<ParticleId>::max() - particles.id_bound()))
     throw InputError(desc_.name,
                      "the particle ids are used up (2^32 particles emitted): the "
                      "run cannot add more");
-  const Vec3 velocity = to_vec3(desc_.direction * speed);
-  for (std::uint64_t k = layers_; k < due; ++k) {
-    // Layer k entered when the inflow had travelled k h: it has moved on by the rest since.
-    const Eigen::Vector3d front =
-        desc_.center + desc_.direction * (travelled_ - double(k) * desc_.spacing);
-    for (const Eigen::Vector3d& offset : desc_.opening)
-      particles.add(to_vec3(front + offset), velocity, desc_.particle_mass, ParticleType::Liquid,
-                    desc_.material);
+  // Layer by layer, each in lattice order: a uniform profile places whole layers as they come.
+  for (std::uint64_t k = first; k < last; ++k)
+    for (std::size_t i = 0; i < factor_.size(); ++i) {
+      if (k < column_layers_[i] || k >= due[i]) continue;
+      // Layer k of this column entered when it had travelled k h: it has moved on by the rest.
+      const double f = factor_[i];
+      const Eigen::Vector3d front =
+          desc_.center + desc_.direction * (f * travelled_ - double(k) * desc_.spacing);
+      particles.add(to_vec3(front + desc_.opening[i]), to_vec3(desc_.direction * (speed * f)),
+                    desc_.particle_mass, ParticleType::Liquid, desc_.material);
+    }
+  for (std::size_t i = 0; i < factor_.size(); ++i) {
+    column_layers_[i] = std::max(column_layers_[i], due[i]);
+    layers_ = std::max(layers_, column_layers_[i]);
   }
   change.added = std::size_t(new_ids);
   change.mass_added = double(new_ids) * double(desc_.particle_mass);
-  layers_ = due;
   return change;
 }
 
@@ -87,12 +140,17 @@ void Emitter::restore_state(StateReader& in) {
   const auto clock = in.get<double>();
   const auto travelled = in.get<double>();
   const auto layers = in.get<std::uint64_t>();
-  in.expect(std::isfinite(clock) && std::isfinite(travelled) && travelled >= 0 &&
-                layers <= layers_due(travelled),
+  // Every column has placed the layers due at `travelled` (apply() places all that are due).
+  std::uint64_t most = 0;
+  if (std::isfinite(travelled) && travelled >= 0)
+    for (std::size_t i = 0; i < factor_.size(); ++i)
+      most = std::max(most, layers_due(i, travelled));
+  in.expect(std::isfinite(clock) && std::isfinite(travelled) && travelled >= 0 && layers == most,
             "the emitter's clock (" + desc_.name + ")");
   clock_ = clock;
   travelled_ = travelled;
   layers_ = layers;
+  for (std::size_t i = 0; i < factor_.size(); ++i) column_layers_[i] = layers_due(i, travelled);
 }
 
 }  // namespace upf

@@ -13,6 +13,12 @@
 // inlet buffer of Tafuni et al. 2018 (DualSPHysics) imposes it: the layers then keep their
 // spacing h against the back-pressure of a pool or a channel they pour into, where a free
 // layer would be slowed and the next one placed onto it.
+//
+// A velocity profile (inflow_profile.h) scales the speed at each lattice point by a factor f
+// that averages 1 over the opening: each point is then a column of its own, whose layer k enters
+// once f D >= k h, so the columns stay a spacing apart along the flow and the rate is still
+// rho0 * area * v. A uniform profile (f = 1) is the one-layer-at-a-time emitter above, bit for
+// bit.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,6 +29,7 @@
 
 #include "framework/particles/particles.h"
 #include "framework/world/particle_source.h"
+#include "solvers/sources/inflow_profile.h"
 #include "solvers/sources/speed_profile.h"
 
 namespace upf {
@@ -43,6 +50,7 @@ struct EmitterDesc {
   double radius = 0, half_width = 0, half_height = 0;
   double buffer = 0;  // how far ahead of the opening the inflow buffer reaches (m)
   SpeedProfile speed;
+  InflowProfile profile;  // across the opening; uniform by default
   // At most this many layers (a volume to emit, a budget that closes it); the largest integer:
   // no limit.
   std::uint64_t max_layers = std::numeric_limits<std::uint64_t>::max();
@@ -52,29 +60,38 @@ struct EmitterDesc {
   std::string budget_where;
 };
 
+// How many particles the emitter has placed once the inflow has travelled `travelled` (its
+// max_layers applied, the budget not): the scene's memory check and budget use it.
+double particles_due(const EmitterDesc& desc, double travelled);
+
 class Emitter : public ParticleSource {
  public:
   explicit Emitter(EmitterDesc desc);
   std::string_view name() const override { return desc_.name; }
   bool may_change(double time, double dt) const override;
-  SourceChange apply(Particles& particles, double time, double dt) override;
+  SourceChange apply(Particles& particles, const SourceStep& step) override;
   void save_state(StateWriter& out) const override;
   void restore_state(StateReader& in) override;
 
   // The opening's area, points x h^2: the flow rate is rho0 * area() * speed.
   double area() const { return double(desc_.opening.size()) * desc_.spacing * desc_.spacing; }
+  // Layers placed so far (of the fastest column, with a profile).
   std::uint64_t layers() const { return layers_; }
 
  private:
-  // Layers due once the inflow has travelled `travelled`.
-  std::uint64_t layers_due(double travelled) const;
+  // Layers of column `i` due once the inflow has travelled `travelled`.
+  std::uint64_t layers_due(std::size_t i, double travelled) const;
+  // Whether some column has a layer due at `travelled`.
+  bool any_due(double travelled) const;
   // Whether `x` is in the inflow buffer.
   bool in_buffer(const Eigen::Vector3d& x) const;
 
   EmitterDesc desc_;
-  double clock_ = 0;      // the time `travelled_` reaches
-  double travelled_ = 0;  // D(clock_)
-  std::uint64_t layers_ = 0;
+  double clock_ = 0;            // the time `travelled_` reaches
+  double travelled_ = 0;        // D(clock_)
+  std::uint64_t layers_ = 0;    // the most layers of any column (every column's, when uniform)
+  std::vector<double> factor_;  // each column's profile factor
+  std::vector<std::uint64_t> column_layers_;  // each column's layers so far
 };
 
 }  // namespace upf

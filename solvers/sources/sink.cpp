@@ -14,7 +14,7 @@ bool Sink::contains(const Eigen::Vector3d& x) const {
   return (x - desc_.point).dot(desc_.normal) > 0;
 }
 
-SourceChange Sink::apply(Particles& particles, double /*time*/, double /*dt*/) {
+SourceChange Sink::apply(Particles& particles, const SourceStep& step) {
   // Looked at before every step: the flags' storage is kept, and the arrays are only compacted
   // when something goes.
   SourceChange change;
@@ -27,6 +27,7 @@ SourceChange Sink::apply(Particles& particles, double /*time*/, double /*dt*/) {
       ++going;
     }
   if (going > 0) change.removed = particles.remove(doomed_);
+  if (outflow_) outflow_->apply(particles, step.ranks);
   return change;
 }
 

@@ -1,7 +1,8 @@
 // A sink: a region where liquid leaves the scene, a box or a half-space (beyond a plane, on the
-// side its normal points to), like SPlisHSPlasH's and DualSPHysics' outlets without a buffer.
-// Before each step it removes every liquid particle whose centre is inside; walls, bodies and
-// grains are never removed (particle_source.h: survivors keep their order).
+// side its normal points to), like SPlisHSPlasH's and DualSPHysics' outlets. Before each step it
+// removes every liquid particle whose centre is inside; walls, bodies and grains are never
+// removed (particle_source.h: survivors keep their order). A box sink may have an outflow buffer
+// upstream of it (outflow_buffer.h), which makes it an outlet that holds the flow's speed.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,6 +12,7 @@
 
 #include "framework/scene/scene.h"
 #include "framework/world/particle_source.h"
+#include "solvers/sources/outflow_buffer.h"
 
 namespace upf {
 
@@ -19,18 +21,22 @@ struct SinkDesc {
   std::optional<Box> box;                             // a box sink, or
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // a half-space through `point`
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // pointing into the removed side (unit)
+  std::optional<OutflowBufferDesc> outflow;           // a box's outflow buffer
 };
 
 class Sink : public ParticleSource {
  public:
-  explicit Sink(SinkDesc desc) : desc_(std::move(desc)) {}
+  explicit Sink(SinkDesc desc) : desc_(std::move(desc)) {
+    if (desc_.outflow) outflow_.emplace(*desc_.outflow);
+  }
   std::string_view name() const override { return desc_.name; }
   bool may_change(double, double) const override { return true; }
-  SourceChange apply(Particles& particles, double time, double dt) override;
+  SourceChange apply(Particles& particles, const SourceStep& step) override;
   bool contains(const Eigen::Vector3d& x) const;
 
  private:
   SinkDesc desc_;
+  std::optional<OutflowBuffer> outflow_;
   std::vector<std::uint8_t> doomed_;  // apply()'s flags, kept between steps
 };
 

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,9 +22,59 @@ struct SinksData : SceneSectionData {
   std::vector<SinkDesc> sinks;
 };
 
+// "outflow": {"direction": [1, 0, 0], "buffer": 4, "velocity": "extrapolated" or m/s}: the
+// outflow buffer upstream of a box sink's face (outflow_buffer.h).
+std::optional<OutflowBufferDesc> read_outflow(JsonInput& in, const json& s, const std::string& path,
+                                              const Box& box, double h) {
+  const std::string where = JsonInput::child(path, "outflow");
+  const json& o = s.at("outflow");
+  if (!in.expect_object(o, where)) return std::nullopt;
+  in.check_keys(o, where, {"direction", "buffer", "velocity"});
+  const auto direction = in.vec3(o, where, "direction", true);
+  const double buffer = in.number(o, where, "buffer", 4, 1, 50, false, "spacings");
+  if (!direction) return std::nullopt;
+  OutflowBufferDesc d;
+  int axis = -1;
+  for (int a = 0; a < 3; ++a)
+    if ((*direction)[a] != 0 && (*direction)[(a + 1) % 3] == 0 && (*direction)[(a + 2) % 3] == 0)
+      axis = a;
+  if (axis < 0) {
+    in.problem(JsonInput::child(where, "direction"),
+               "the outflow goes along a world axis: [1, 0, 0], [0, -1, 0], ... (the box's face "
+               "across it is the outlet)");
+    return std::nullopt;
+  }
+  d.axis = axis;
+  d.sign = (*direction)[axis] > 0 ? 1.0 : -1.0;
+  d.face = d.sign > 0 ? box.min[axis] : box.max[axis];
+  d.length = buffer * h;
+  d.reference = 2 * h;
+  if (auto v = o.find("velocity"); v != o.end() && !(v->is_string() && *v == "extrapolated")) {
+    if (!v->is_number()) {
+      in.problem(JsonInput::child(where, "velocity"),
+                 "expected \"extrapolated\" or a speed in m/s, found " + json_type_name(*v));
+      return std::nullopt;
+    }
+    const double speed = in.number(o, where, "velocity", 0, 0, 1e4, true, "m/s");
+    if (!(speed > 0)) return std::nullopt;
+    d.speed = speed;
+  }
+  // The cross-section: the box's extent on the other two axes, in cells about 2 spacings wide
+  // (at most 64 a side: a box reaching far beyond the liquid costs nothing more).
+  for (int k = 0; k < 2; ++k) {
+    const int a = (axis + 1 + k) % 3;
+    const double extent = box.max[a] - box.min[a];
+    d.across[std::size_t(k)] = a;
+    d.lo[std::size_t(k)] = box.min[a];
+    d.cells[std::size_t(k)] = int(std::clamp(std::round(extent / (2 * h)), 1.0, 64.0));
+    d.cell[std::size_t(k)] = extent / double(d.cells[std::size_t(k)]);
+  }
+  return d;
+}
+
 std::optional<SinkDesc> read_sink(JsonInput& in, const json& s, const std::string& where,
-                                  std::size_t index) {
-  in.check_keys(s, where, {"name", "min", "max", "point", "normal"});
+                                  std::size_t index, double h) {
+  in.check_keys(s, where, {"name", "min", "max", "point", "normal", "outflow"});
   SinkDesc sink;
   sink.name = in.string(s, where, "name", false).value_or("sink " + std::to_string(index));
   const bool is_box = s.contains("min") || s.contains("max");
@@ -40,7 +92,17 @@ std::optional<SinkDesc> read_sink(JsonInput& in, const json& s, const std::strin
       return std::nullopt;
     }
     sink.box = Box{*lo, *hi};
+    if (s.contains("outflow")) {
+      sink.outflow = read_outflow(in, s, where, *sink.box, h);
+      if (!sink.outflow) return std::nullopt;
+    }
     return sink;
+  }
+  if (s.contains("outflow")) {
+    in.problem(JsonInput::child(where, "outflow"),
+               "an outflow buffer needs a box sink (\"min\", \"max\"): its face across the "
+               "outflow is the outlet");
+    return std::nullopt;
   }
   const auto point = in.vec3(s, where, "point", true), normal = in.vec3(s, where, "normal", true);
   if (!point || !normal) return std::nullopt;
@@ -54,11 +116,11 @@ std::optional<SinkDesc> read_sink(JsonInput& in, const json& s, const std::strin
 }
 
 std::shared_ptr<const SceneSectionData> read_sinks(const json& node, const std::string& path,
-                                                   const SceneDescription&, JsonInput& in) {
+                                                   const SceneDescription& scene, JsonInput& in) {
   auto data = std::make_shared<SinksData>();
   const bool ok = read_each(node, path, in, "sinks",
                             [&](const json& s, const std::string& where, std::size_t i) {
-                              auto sink = read_sink(in, s, where, i);
+                              auto sink = read_sink(in, s, where, i, double(scene.world.spacing));
                               if (sink) data->sinks.push_back(*sink);
                               return sink.has_value();
                             });

@@ -37,11 +37,8 @@ struct EmittersData : SceneSectionData {
   // pour that would not fit before anything is written.
   double estimated_particles() const override {
     double n = 0;
-    for (const auto& e : emitters) {
-      const double layers = std::floor(e.desc.speed.distance(0, end_time) / e.desc.spacing) + 1;
-      n += double(e.nozzle.size()) +
-           std::min(layers, double(e.desc.max_layers)) * double(e.desc.opening.size());
-    }
+    for (const auto& e : emitters)
+      n += double(e.nozzle.size()) + particles_due(e.desc, e.desc.speed.distance(0, end_time));
     return n;
   }
   bool moves() const override { return !emitters.empty(); }
@@ -181,12 +178,39 @@ void read_particle_budget(JsonInput& in, const json& e, const std::string& path,
   }
 }
 
+// "profile": the velocity profile across the opening (inflow_profile.h), after the lattice.
+bool read_inflow_profile(JsonInput& in, const json& e, const std::string& path,
+                         const SceneDescription& scene, EmitterDesc& d) {
+  const std::string name = in.string(e, path, "profile", false).value_or("uniform");
+  const std::string where = JsonInput::child(path, "profile");
+  InflowProfileKind kind{};
+  if (!parse_inflow_profile(name, kind)) {
+    in.problem(where, "unknown profile '" + name +
+                          "' (allowed: \"uniform\", \"parabolic\", \"open_channel\")");
+    return false;
+  }
+  // open_channel's bed is the opening's edge lowest along gravity.
+  const Vec3 g = scene.world.gravity;
+  const Eigen::Vector3d down(double(g.x), double(g.y), double(g.z));
+  const Eigen::Vector3d across = -(down - down.dot(d.direction) * d.direction);
+  if (kind == InflowProfileKind::OpenChannel && !(across.norm() > 1e-6 * down.norm())) {
+    in.problem(where,
+               "an open_channel profile needs gravity across the flow (its bed is the opening's "
+               "lowest edge): gravity is zero or along the emitter's direction");
+    return false;
+  }
+  const Eigen::Vector3d up =
+      kind == InflowProfileKind::OpenChannel ? across.normalized() : Eigen::Vector3d(d.height);
+  d.profile = InflowProfile(kind, d.opening, d.width, d.height, d.circle, d.spacing, up);
+  return true;
+}
+
 std::optional<EmitterEntry> read_emitter(JsonInput& in, const json& e, const std::string& path,
                                          std::size_t index, const SceneDescription& scene) {
   in.check_keys(
       e, path,
       {"name", "material", "shape", "center", "direction", "radius", "size", "width_axis", "speed",
-       "start", "end", "volume", "nozzle", "buffer", "max_particles", "at_limit"});
+       "profile", "start", "end", "volume", "nozzle", "buffer", "max_particles", "at_limit"});
   const double h = double(scene.world.spacing);
   EmitterEntry entry;
   EmitterDesc& d = entry.desc;
@@ -303,6 +327,7 @@ std::optional<EmitterEntry> read_emitter(JsonInput& in, const json& e, const std
     in.problem(path, "the opening holds no lattice point at this particle spacing: make it wider");
     return std::nullopt;
   }
+  if (!read_inflow_profile(in, e, path, scene, d)) return std::nullopt;
   if (auto volume = e.find("volume"); volume != e.end()) {
     const double v = in.number(e, path, "volume", 0, 0, 1e9, true, "m^3");
     if (v > 0)

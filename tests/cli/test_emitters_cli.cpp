@@ -86,6 +86,32 @@ TEST_F(EmittersCli, BadEmittersAndSinksAreNamedByTheirJsonPath) {
                   {":/emitters/0/at_limit", "unknown at_limit 'stop'"});
   expect_rejected(with([](auto& d) { d["emitters"][0]["at_limit"] = "close"; }),
                   {":/emitters/0/at_limit", "needs max_particles"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["profile"] = "turbulent"; }),
+                  {":/emitters/0/profile", "unknown profile 'turbulent'", "open_channel"});
+  expect_rejected(with([](auto& d) { d["emitters"][0]["profile"] = "open_channel"; }),
+                  {":/emitters/0/profile", "gravity across the flow"});
+  expect_rejected(with([](auto& d) {
+                    d["sinks"][0] = {{"point", {0, 0.1, 0}},
+                                     {"normal", {0, -1, 0}},
+                                     {"outflow", {{"direction", {0, -1, 0}}}}};
+                  }),
+                  {":/sinks/0/outflow", "needs a box sink"});
+  expect_rejected(with([](auto& d) {
+                    d["sinks"][0]["outflow"] = {{"direction", {1, 1, 0}}};
+                  }),
+                  {":/sinks/0/outflow/direction", "along a world axis"});
+  expect_rejected(with([](auto& d) {
+                    d["sinks"][0]["outflow"] = {{"direction", {1, 0, 0}}, {"velocity", -2}};
+                  }),
+                  {":/sinks/0/outflow/velocity"});
+  expect_rejected(with([](auto& d) {
+                    d["sinks"][0]["outflow"] = {{"direction", {1, 0, 0}}, {"velocity", "free"}};
+                  }),
+                  {":/sinks/0/outflow/velocity", "extrapolated"});
+  expect_rejected(with([](auto& d) {
+                    d["sinks"][0]["outflow"] = {{"direction", {1, 0, 0}}, {"buffer", 0}};
+                  }),
+                  {":/sinks/0/outflow/buffer"});
   // Nothing was written by any of them.
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }

@@ -135,13 +135,12 @@ TEST(DevicePipelineOmp, PercentileStoppingTestIsBitwiseTheCpuPath) {
 
 // Emitters and sinks (issue 40) change the count before steps: the device pipeline takes the
 // particles again (World::apply_sources) and gives the CPU path's bits; so does a checkpoint.
-TEST(DevicePipelineOmp, APourIntoADrainIsBitwiseTheCpuPath) {
-  const nlohmann::json doc = testing::hose_into_a_drain();
+void expect_sources_bitwise(const nlohmann::json& doc, int steps) {
   Stepped cpu = start(doc, 2, "cpu");
   Stepped omp = start(doc, 2, "omp");
   ASSERT_NE(omp.tw.world->device(), nullptr);
   std::size_t added = 0, removed = 0;
-  for (int k = 0; k < 90; ++k) {
+  for (int k = 0; k < steps; ++k) {
     step(cpu, 1);
     step(omp, 1);
     added += cpu.tw.world->last_step().sources.added;
@@ -158,6 +157,16 @@ TEST(DevicePipelineOmp, APourIntoADrainIsBitwiseTheCpuPath) {
   cpu.tw.world->save_state(a);
   omp.tw.world->save_state(b);
   EXPECT_TRUE(a.bytes() == b.bytes()) << "checkpoints differ";
+}
+
+TEST(DevicePipelineOmp, APourIntoADrainIsBitwiseTheCpuPath) {
+  expect_sources_bitwise(testing::hose_into_a_drain(), 90);
+}
+
+// An inlet with a velocity profile and an outlet with an outflow buffer: the velocities they set
+// before each step reach the device as any host edit does.
+TEST(DevicePipelineOmp, AChannelWithOpenEndsIsBitwiseTheCpuPath) {
+  expect_sources_bitwise(testing::channel_with_open_ends(), 120);
 }
 
 // Host edits between steps (what Python and the run loop's resume do) reach the device, and the

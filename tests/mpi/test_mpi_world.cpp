@@ -301,6 +301,19 @@ TEST(SplitWorld, APourIntoADrainIsBitwiseTheOneRankRun) {
   }
 }
 
+// Open ends (issue 40): the outlet's outflow buffer sums the speeds arriving over every rank
+// (exactly, in integers), so each rank imposes the one-rank run's speeds on its share.
+TEST(SplitWorld, AChannelWithOpenEndsIsBitwiseTheOneRankRun) {
+  nlohmann::json doc = testing::channel_with_open_ends();
+  doc["neighbours"] = {{"reorder_every", 0}};
+  Outcome split;
+  expect_same_as_one_rank(doc, 120, 10, 60, &split);
+  if (rank_here() == 0) {
+    EXPECT_GT(split.added, 300u) << "the inlet poured";
+    EXPECT_GT(split.removed, 20u) << "the outlet took some of it";
+  }
+}
+
 // What the split world cannot run yet is refused before any step, on every rank alike.
 void expect_refused(const nlohmann::json& doc, const std::string& needle) {
   try {
