@@ -110,10 +110,19 @@ SourceChange Emitter::apply(Particles& particles, const SourceStep& step) {
     throw InputError(desc_.name,
                      "the particle ids are used up (2^32 particles emitted): the "
                      "run cannot add more");
+  // With live_limit, what fits: the particles of its own in the scene (made less given back) stay
+  // within it, and the layers due while it is full are skipped, as SPlisHSPlasH's emitter with
+  // particle reuse emits only the particles it has.
+  const std::uint64_t live = created_ > returned_ ? created_ - returned_ : 0;
+  std::uint64_t room = desc_.live_limit == kNoLimit ? new_ids
+                       : live < desc_.live_limit    ? desc_.live_limit - live
+                                                    : 0;
+  std::uint64_t placed = 0;
   // Layer by layer, each in lattice order: a uniform profile places whole layers as they come.
-  for (std::uint64_t k = first; k < last; ++k)
-    for (std::size_t i = 0; i < factor_.size(); ++i) {
+  for (std::uint64_t k = first; k < last && placed < room; ++k)
+    for (std::size_t i = 0; i < factor_.size() && placed < room; ++i) {
       if (k < column_layers_[i] || k >= due[i]) continue;
+      ++placed;
       // Layer k of this column entered when it had travelled k h: it has moved on by the rest.
       const double f = factor_[i];
       const Eigen::Vector3d front =
@@ -125,8 +134,9 @@ SourceChange Emitter::apply(Particles& particles, const SourceStep& step) {
     column_layers_[i] = std::max(column_layers_[i], due[i]);
     layers_ = std::max(layers_, column_layers_[i]);
   }
-  change.added = std::size_t(new_ids);
-  change.mass_added = double(new_ids) * double(desc_.particle_mass);
+  created_ += placed;
+  change.added = std::size_t(placed);
+  change.mass_added = double(placed) * double(desc_.particle_mass);
   return change;
 }
 
@@ -134,6 +144,10 @@ void Emitter::save_state(StateWriter& out) const {
   out.put(clock_);
   out.put(travelled_);
   out.put(layers_);
+  if (desc_.live_limit != kNoLimit) {
+    out.put(created_);
+    out.put(returned_);
+  }
 }
 
 void Emitter::restore_state(StateReader& in) {
@@ -151,6 +165,10 @@ void Emitter::restore_state(StateReader& in) {
   travelled_ = travelled;
   layers_ = layers;
   for (std::size_t i = 0; i < factor_.size(); ++i) column_layers_[i] = layers_due(i, travelled);
+  if (desc_.live_limit != kNoLimit) {
+    created_ = in.get<std::uint64_t>();
+    returned_ = in.get<std::uint64_t>();
+  }
 }
 
 }  // namespace upf

@@ -58,6 +58,9 @@ struct EmitterDesc {
   // InputError at `budget_where` (the scene's max_particles) instead.
   std::uint64_t budget_layers = std::numeric_limits<std::uint64_t>::max();
   std::string budget_where;
+  // at_limit "reuse": at most this many of its particles in the scene at once, counting those
+  // the sinks that reuse into it gave back (Emitter::give_back); the largest integer: none.
+  std::uint64_t live_limit = std::numeric_limits<std::uint64_t>::max();
 };
 
 // How many particles the emitter has placed once the inflow has travelled `travelled` (its
@@ -75,6 +78,11 @@ class Emitter : public ParticleSource {
 
   // The opening's area, points x h^2: the flow rate is rho0 * area() * speed.
   double area() const { return double(desc_.opening.size()) * desc_.spacing * desc_.spacing; }
+  // A sink that reuses into this emitter took `particles`: room for as many again.
+  void give_back(std::uint64_t particles) { returned_ += particles; }
+  // Particles placed so far, and given back by sinks.
+  std::uint64_t created() const { return created_; }
+  std::uint64_t returned() const { return returned_; }
   // Layers placed so far (of the fastest column, with a profile).
   std::uint64_t layers() const { return layers_; }
 
@@ -92,6 +100,7 @@ class Emitter : public ParticleSource {
   std::uint64_t layers_ = 0;    // the most layers of any column (every column's, when uniform)
   std::vector<double> factor_;  // each column's profile factor
   std::vector<std::uint64_t> column_layers_;  // each column's layers so far
+  std::uint64_t created_ = 0, returned_ = 0;  // for live_limit
 };
 
 }  // namespace upf

@@ -3,7 +3,9 @@
 #include <vector>
 
 #include "framework/core/vec3_eigen.h"
+#include "framework/executors/rank_collectives.h"
 #include "framework/particles/particles.h"
+#include "solvers/sources/emitter.h"
 
 namespace upf {
 
@@ -27,6 +29,12 @@ SourceChange Sink::apply(Particles& particles, const SourceStep& step) {
       ++going;
     }
   if (going > 0) change.removed = particles.remove(doomed_);
+  if (reuse_into_) {
+    // Every rank's emitter places the same layers: it gets back what all ranks took.
+    std::int64_t taken = std::int64_t(change.removed);
+    if (step.ranks) taken = step.ranks->sum(taken);
+    reuse_into_->give_back(std::uint64_t(taken));
+  }
   if (outflow_) outflow_->apply(particles, step.ranks);
   return change;
 }

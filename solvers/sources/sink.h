@@ -22,7 +22,10 @@ struct SinkDesc {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // a half-space through `point`
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // pointing into the removed side (unit)
   std::optional<OutflowBufferDesc> outflow;           // a box's outflow buffer
+  std::string reuse;  // the emitter it gives its particles back to (at_limit "reuse"), or none
 };
+
+class Emitter;
 
 class Sink : public ParticleSource {
  public:
@@ -33,10 +36,13 @@ class Sink : public ParticleSource {
   bool may_change(double, double) const override { return true; }
   SourceChange apply(Particles& particles, const SourceStep& step) override;
   bool contains(const Eigen::Vector3d& x) const;
+  // Gives what it takes back to `emitter` (desc.reuse), counted over every rank.
+  void reuse_into(Emitter* emitter) { reuse_into_ = emitter; }
 
  private:
   SinkDesc desc_;
   std::optional<OutflowBuffer> outflow_;
+  Emitter* reuse_into_ = nullptr;
   std::vector<std::uint8_t> doomed_;  // apply()'s flags, kept between steps
 };
 

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -8,6 +9,7 @@
 #include "framework/scene/json_input.h"
 #include "framework/scene/scene.h"
 #include "framework/world/world.h"
+#include "solvers/sources/emitter.h"
 #include "solvers/sources/json_array.h"
 #include "solvers/sources/sink.h"
 #include "solvers/sources/sources_section.h"
@@ -73,10 +75,25 @@ std::optional<OutflowBufferDesc> read_outflow(JsonInput& in, const json& s, cons
 }
 
 std::optional<SinkDesc> read_sink(JsonInput& in, const json& s, const std::string& where,
-                                  std::size_t index, double h) {
-  in.check_keys(s, where, {"name", "min", "max", "point", "normal", "outflow"});
+                                  std::size_t index, const SceneDescription& scene) {
+  const double h = double(scene.world.spacing);
+  in.check_keys(s, where, {"name", "min", "max", "point", "normal", "outflow", "reuse"});
   SinkDesc sink;
   sink.name = in.string(s, where, "name", false).value_or("sink " + std::to_string(index));
+  if (s.contains("reuse")) {
+    sink.reuse = in.string(s, where, "reuse", true).value_or("");
+    const EmitterDesc* emitter = find_emitter(scene, sink.reuse);
+    if (!emitter) {
+      in.problem(JsonInput::child(where, "reuse"), "no emitter is named '" + sink.reuse + "'");
+      return std::nullopt;
+    }
+    if (emitter->live_limit == std::numeric_limits<std::uint64_t>::max()) {
+      in.problem(JsonInput::child(where, "reuse"),
+                 "emitter '" + sink.reuse +
+                     "' does not reuse particles: give it max_particles and at_limit \"reuse\"");
+      return std::nullopt;
+    }
+  }
   const bool is_box = s.contains("min") || s.contains("max");
   if (is_box == (s.contains("point") || s.contains("normal"))) {
     in.problem(where,
@@ -120,7 +137,7 @@ std::shared_ptr<const SceneSectionData> read_sinks(const json& node, const std::
   auto data = std::make_shared<SinksData>();
   const bool ok = read_each(node, path, in, "sinks",
                             [&](const json& s, const std::string& where, std::size_t i) {
-                              auto sink = read_sink(in, s, where, i, double(scene.world.spacing));
+                              auto sink = read_sink(in, s, where, i, scene);
                               if (sink) data->sinks.push_back(*sink);
                               return sink.has_value();
                             });
@@ -129,8 +146,15 @@ std::shared_ptr<const SceneSectionData> read_sinks(const json& node, const std::
 }
 
 void build_sinks(World& world, const SceneDescription&, const SceneSectionData& section) {
-  for (const auto& s : static_cast<const SinksData&>(section).sinks)
-    world.add_source(std::make_unique<Sink>(s));
+  for (const auto& s : static_cast<const SinksData&>(section).sinks) {
+    auto sink = std::make_unique<Sink>(s);
+    if (!s.reuse.empty())
+      for (const auto& source : world.sources())
+        if (auto* emitter = dynamic_cast<Emitter*>(source.get());
+            emitter && emitter->name() == s.reuse)
+          sink->reuse_into(emitter);
+    world.add_source(std::move(sink));
+  }
 }
 
 }  // namespace

@@ -38,7 +38,9 @@ struct EmittersData : SceneSectionData {
   double estimated_particles() const override {
     double n = 0;
     for (const auto& e : emitters)
-      n += double(e.nozzle.size()) + particles_due(e.desc, e.desc.speed.distance(0, end_time));
+      n += double(e.nozzle.size()) +
+           std::min(particles_due(e.desc, e.desc.speed.distance(0, end_time)),
+                    double(e.desc.live_limit));
     return n;
   }
   bool moves() const override { return !emitters.empty(); }
@@ -138,7 +140,8 @@ std::string text_of(const Eigen::Vector3d& x) {
 // "max_particles" and "at_limit": the most particles the emitter may add (whole layers). With
 // "close" it stops there, as SPlisHSPlasH's emitters do; with "error" (the default) a pour that
 // would pass it by /time/end is refused here, and one that passes it later (a longer --end)
-// stops the run there with the frames kept.
+// stops the run there with the frames kept; with "reuse" it is the most of its particles in the
+// scene at once, and sinks that reuse into it give back room (SPlisHSPlasH's particle reuse).
 void read_particle_budget(JsonInput& in, const json& e, const std::string& path,
                           const SceneDescription& scene, EmitterDesc& d) {
   const double end_time = scene.world.time.end;
@@ -160,6 +163,8 @@ void read_particle_budget(JsonInput& in, const json& e, const std::string& path,
   }
   if (at_limit == "close") {
     d.max_layers = std::min(d.max_layers, layers);
+  } else if (at_limit == "reuse") {
+    d.live_limit = std::uint64_t(most);
   } else if (at_limit == "error") {
     d.budget_layers = layers;
     d.budget_where = scene.source.string() + ":" + where;
@@ -174,7 +179,7 @@ void read_particle_budget(JsonInput& in, const json& e, const std::string& path,
                             "stop the emitter at the limit");
   } else {
     in.problem(JsonInput::child(path, "at_limit"),
-               "unknown at_limit '" + at_limit + "' (allowed: \"error\", \"close\")");
+               "unknown at_limit '" + at_limit + "' (allowed: \"error\", \"close\", \"reuse\")");
   }
 }
 
@@ -382,6 +387,18 @@ std::shared_ptr<const SceneSectionData> read_emitters(const json& node, const st
   if (!ok) return nullptr;
   return data;
 }
+
+}  // namespace
+
+const EmitterDesc* find_emitter(const SceneDescription& scene, const std::string& name) {
+  for (const auto& section : scene.sections)
+    if (section.key == "emitters" && section.data)
+      for (const auto& e : static_cast<const EmittersData&>(*section.data).emitters)
+        if (e.desc.name == name) return &e.desc;
+  return nullptr;
+}
+
+namespace {
 
 void build_emitters(World& world, const SceneDescription&, const SceneSectionData& section) {
   const auto& data = static_cast<const EmittersData&>(section);

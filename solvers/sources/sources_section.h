@@ -4,9 +4,17 @@
 
 #include "framework/scene/scene_section.h"
 
+#include <string>
+
 namespace upf {
 
 class Registry;
+struct EmitterDesc;
+struct SceneDescription;
+
+// The emitter of that name, as read from the scene's "emitters" (read before "sinks"); null when
+// there is none.
+const EmitterDesc* find_emitter(const SceneDescription& scene, const std::string& name);
 
 SceneSection emitters_scene_section();
 SceneSection sinks_scene_section();

@@ -112,6 +112,10 @@ TEST_F(EmittersCli, BadEmittersAndSinksAreNamedByTheirJsonPath) {
                     d["sinks"][0]["outflow"] = {{"direction", {1, 0, 0}}, {"buffer", 0}};
                   }),
                   {":/sinks/0/outflow/buffer"});
+  expect_rejected(with([](auto& d) { d["sinks"][0]["reuse"] = "tap"; }),
+                  {":/sinks/0/reuse", "no emitter is named 'tap'"});
+  expect_rejected(with([](auto& d) { d["sinks"][0]["reuse"] = "emitter 0"; }),
+                  {":/sinks/0/reuse", "does not reuse particles"});
   // Nothing was written by any of them.
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }

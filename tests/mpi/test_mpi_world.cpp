@@ -314,6 +314,23 @@ TEST(SplitWorld, AChannelWithOpenEndsIsBitwiseTheOneRankRun) {
   }
 }
 
+// Particle reuse: the drain gives back what every rank took, so every rank's hose places the
+// one-rank run's layers once its budget is full.
+TEST(SplitWorld, APourThatReusesItsParticlesIsBitwiseTheOneRankRun) {
+  nlohmann::json doc = testing::hose_into_a_drain();
+  doc["neighbours"] = {{"reorder_every", 0}};
+  doc["emitters"][0]["name"] = "hose";
+  doc["emitters"][0]["max_particles"] = 300;
+  doc["emitters"][0]["at_limit"] = "reuse";
+  doc["sinks"][0]["reuse"] = "hose";
+  Outcome split;
+  expect_same_as_one_rank(doc, 150, 10, 75, &split);
+  if (rank_here() == 0) {
+    EXPECT_GT(split.added, 320u) << "the hose poured on past its budget";
+    EXPECT_GT(split.removed, 20u);
+  }
+}
+
 // What the split world cannot run yet is refused before any step, on every rank alike.
 void expect_refused(const nlohmann::json& doc, const std::string& needle) {
   try {

@@ -1,13 +1,16 @@
 // Open boundaries (issue 40; solvers/sources/inflow_profile.h, outflow_buffer.h): an inlet that
 // imposes a velocity profile, and an outlet whose outflow buffer holds the flow's speed, so a
-// channel runs at its level up to the outlet instead of draining into it.
+// channel runs at its level up to the outlet instead of draining into it; and particle reuse, a
+// sink that gives an emitter back room under its max_particles.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
 #include <cmath>
 #include <vector>
 
+#include "framework/core/state_stream.h"
 #include "framework/run/probes.h"
+#include "solvers/sources/emitter.h"
 #include "tests/physics/scene_helpers.h"
 #include "tests/physics/validation_record.h"
 
@@ -169,6 +172,63 @@ TEST(OpenBoundaries, AParabolicInletImposesHagenPoiseuillesProfileAtTheRateAU) {
                     "within one layer", volume / (area * mean_speed * end));
   EXPECT_NEAR(centre / mean_speed, 2.0, 0.06);
   EXPECT_NEAR(volume, area * mean_speed * end, area * h);
+}
+
+// Reference: particle reuse as SPlisHSPlasH's emitters do it (a fixed budget of particles that
+// leave and come back), with conservation of the count: a hose with max_particles 500 and
+// at_limit "reuse" pours into a tank whose floor is half drain, and the drain gives back what it
+// takes. At every step the liquid present is exactly what the hose made less what the drain gave
+// back, and never more than 500; the hose pours on past 500 as the drain frees room (new ids,
+// which never repeat); and a checkpoint taken mid-way resumes to the same bits.
+TEST(Emitters, ReuseKeepsAnEmittersParticlesWithinMaxParticlesAndPoursOn) {
+  const nlohmann::json doc = {
+      {"name", "reuse"},
+      {"particle_spacing", kSpacing},
+      {"materials",
+       {{"water", {{"type", "liquid"}, {"density", 1000}, {"viscosity", 0.001}}},
+        {"walls", {{"type", "frozen"}}}}},
+      {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {0.2, 0.5, 0.2}}}}},
+      {"emitters",
+       {{{"name", "hose"},
+         {"material", "water"},
+         {"shape", "rectangle"},
+         {"size", {0.1, 0.1}},
+         {"center", {0.1, 0.4, 0.1}},
+         {"direction", {0, -1, 0}},
+         {"speed", 1.5},
+         {"max_particles", 500},
+         {"at_limit", "reuse"}}}},
+      {"sinks", {{{"min", {0, -1, 0}}, {"max", {0.1, 0.05, 0.2}}, {"reuse", "hose"}}}},
+      {"time", {{"end", 1.2}}},
+  };
+  TestWorld t(doc, 2);
+  const auto& hose = dynamic_cast<const Emitter&>(*t.world->sources().front());
+  std::size_t most = 0;
+  StateWriter saved;
+  while (t.world->time() < 1.2 - 1e-12) {
+    t.world->step(t.world->next_time_step_until(1.2));
+    const std::size_t liquid = t.world->count(ParticleType::Liquid);
+    ASSERT_EQ(liquid, hose.created() - hose.returned()) << "t = " << t.world->time();
+    most = std::max(most, liquid);
+    if (saved.bytes().empty() && t.world->time() >= 0.6) t.world->save_state(saved);
+  }
+  record_validation("reuse: most liquid particles present, max_particles 500",
+                    "SPlisHSPlasH's particle reuse (a fixed budget)", "500", "at most 500",
+                    double(most));
+  EXPECT_LE(most, 500u);
+  EXPECT_GE(most, 450u) << "the budget filled";
+  EXPECT_GT(hose.created(), 800u) << "the hose poured on with the room the drain gave back";
+  EXPECT_EQ(t.world->particles().id_bound() - hose.created(),
+            t.world->particles().size() - t.world->count(ParticleType::Liquid))
+      << "every particle the hose made took a new id";
+  TestWorld resumed(doc, 2);
+  StateReader in(saved.bytes(), "mid-reuse");
+  resumed.world->restore_state(in);
+  resumed.run_until(1.2);
+  ASSERT_EQ(resumed.world->particles().size(), t.world->particles().size());
+  EXPECT_EQ(bitwise_differences(state_by_id(t.world->particles()),
+                                state_by_id(resumed.world->particles())),
+            0u);
 }
 
 }  // namespace
