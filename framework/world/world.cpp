@@ -194,7 +194,9 @@ void World::update_neighbours() {
 
 void World::step(double dt) {
   if (!prepared_) throw std::logic_error("World::prepare() must run before World::step()");
+  Stopwatch sources_watch;
   apply_sources(dt);
+  sources_ms_ = sources_watch.elapsed_ms();
   if (device_) {
     step_on_device(dt);
     return;
@@ -223,6 +225,7 @@ void World::step(double dt) {
   report_ = StepReport{};
   report_.dt = dt;
   report_.sources = sources_done_;
+  if (!sources_.empty()) report_.stage_ms.emplace_back("sources", sources_ms_);
   report_.neighbour_ms = neighbours.elapsed_ms();
 
   coupling_.reset(particles_.size());
@@ -330,6 +333,7 @@ void World::step_on_device(double dt) {
   report_ = StepReport{};
   report_.dt = dt;
   report_.sources = sources_done_;
+  if (!sources_.empty()) report_.stage_ms.emplace_back("sources", sources_ms_);
   try {
     device_->step(step_count_, dt, report_);
   } catch (const ConvergenceError& e) {
@@ -358,6 +362,7 @@ void World::check_stability_on_device() {
 
 std::vector<std::string> World::stage_names() const {
   std::vector<std::string> names;
+  if (!sources_.empty()) names.emplace_back("sources");  // emitters and sinks, before the step
   for (const StageRunner& r : stage_runners_)
     names.insert(names.end(), r.names().begin(), r.names().end());
   if (!bodies_.empty()) names.emplace_back("bodies");

@@ -164,6 +164,7 @@ class World {
   std::vector<std::unique_ptr<BodySystem>> bodies_;
   std::vector<std::unique_ptr<ParticleSource>> sources_;
   SourceChange sources_done_;  // before the step being taken, for its report
+  double sources_ms_ = 0;      // the time they took
   std::vector<ContainerBox> containers_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
