@@ -36,6 +36,10 @@ class IisphMethod : public ThreeStageMethod {
     predicted_ = &p.scalar_array(kIisphPredictedDensityField);
     next_ = &p.scalar_array(kIisphNextPressureField);
     v_adv_ = &p.vector_array(kIisphAdvectedVelocityField);
+    if (setup_.solve.summed_density_check) {
+      x_star_ = &p.vector_array(kIisphPredictedPositionField);
+      rho_star_ = &p.scalar_array(kIisphSummedDensityField);
+    }
   }
 
   template <class Executor, class Step>
@@ -64,21 +68,26 @@ class IisphMethod : public ThreeStageMethod {
  private:
   template <class Step>
   IisphArrays arrays(const Step& s) {
-    return {s.f,
-            s.owned,
-            s.n,
-            s.fluid_gradient,
-            s.boundary_gradient,
-            s.other_acceleration,
-            s.density,
-            s.pressure_acceleration,
-            s.pressure,
-            raw<Real>(*inverse_diagonal_),
-            raw<Real>(*boundary_divergence_),
-            raw<Real>(*rho_adv_),
-            raw<Real>(*predicted_),
-            raw<Real>(*next_),
-            raw<Vec3>(*v_adv_)};
+    IisphArrays a{s.f,
+                  s.owned,
+                  s.n,
+                  s.fluid_gradient,
+                  s.boundary_gradient,
+                  s.other_acceleration,
+                  s.density,
+                  s.pressure_acceleration,
+                  s.pressure,
+                  raw<Real>(*inverse_diagonal_),
+                  raw<Real>(*boundary_divergence_),
+                  raw<Real>(*rho_adv_),
+                  raw<Real>(*predicted_),
+                  raw<Real>(*next_),
+                  raw<Vec3>(*v_adv_)};
+    if (x_star_) {
+      a.x_star = raw<Vec3>(*x_star_);
+      a.rho_star = raw<Real>(*rho_star_);
+    }
+    return a;
   }
 
   IisphSetup setup_;
@@ -86,6 +95,8 @@ class IisphMethod : public ThreeStageMethod {
   vector<Real>*inverse_diagonal_ = nullptr, *boundary_divergence_ = nullptr, *rho_adv_ = nullptr,
   *predicted_ = nullptr, *next_ = nullptr;
   vector<Vec3>* v_adv_ = nullptr;
+  vector<Vec3>* x_star_ = nullptr;  // with the summed density check only
+  vector<Real>* rho_star_ = nullptr;
 };
 
 }  // namespace upf::device

@@ -43,9 +43,9 @@ ParamBinding<DfsphParams> DfsphSolver::param_binding() {
   b.add({"summed_density_check", "1", 0, 0, 1,
          "1: once the constant-density solve has converged on its linear prediction, sum the "
          "densities where the step leaves the particles (x + dt v*, as PCISPH predicts) and, while "
-         "their stopping error exceeds eta, re-base the prediction on them and iterate on (a "
-         "density sum per round); with stop_percentile 100 the largest compression at the "
-         "particles then stays near eta (docs/solvers.md)"},
+         "their stopping error exceeds eta, move the prediction halfway to them and iterate on "
+         "(at most 4 rounds, a density sum each); with stop_percentile 100 the largest "
+         "compression at the particles drops 2 to 3 times (docs/solvers.md)"},
         &DfsphParams::summed_density_check);
   b.add(wall_pressure_spec(), &DfsphParams::wall_pressure);
   return b;

@@ -90,7 +90,8 @@ void run_dfsph_non_pressure(const Executor& exec, const DfsphArrays& a) {
 }
 
 // The summed-density check's rounds at most: each sums the densities once more. Without a limit
-// (rounds until max_iterations) the 2.5 cm dam break drove a particle to 100 m/s within 47 steps.
+// (rounds until max_iterations) the 2.5 cm dam break drove a particle to 100 m/s within 47 steps;
+// 8 half re-bases did so at eta 2 % (step 48), 4 held at eta 1, 2 and 3 %.
 inline constexpr int kDfsphSummedDensityRounds = 4;
 
 // The stage that measures rho_adv and K: from the density, or from rho_base in a constant-density

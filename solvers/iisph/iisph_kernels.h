@@ -19,6 +19,7 @@
 #include "solvers/fluid/boundary_pressure.h"
 #include "solvers/fluid/density_contrast.h"
 #include "solvers/fluid/density_rate.h"
+#include "solvers/fluid/summed_density.h"
 
 namespace upf {
 
@@ -99,6 +100,33 @@ struct IisphPressureUpdateStage {
     const Real a_ii = -dt * dt / (density[i] * density[i] * inverse_diagonal[i]);
     const Real p = pressure[i] + omega * (rho0 - predicted[i]) / a_ii;
     next[i] = p > Real(0) ? p : Real(0);
+  }
+};
+
+// x*_i = x_i + dt (v_adv_i + dt a_i): where the step leaves i with the pressure accelerations a.
+struct IisphPredictPositionStage {
+  const Vec3* x;
+  const Vec3* v_adv;
+  const Vec3* a_pressure;
+  Real dt;
+  Vec3* x_star;
+  UPF_HD void operator()(std::uint32_t i) const {
+    x_star[i] = x[i] + (v_adv[i] + a_pressure[i] * dt) * dt;
+  }
+};
+
+// rho_adv_i += half the excess of the summed rho*_i over the linear prediction rho_adv_i + (A p)_i
+// at the final pressures (`predicted`): the solve's prediction at those pressures moves halfway
+// to rho*. Only an excess moves it (a linear prediction above rho* errs on the safe side); half,
+// as DFSPH's re-base (dfsph_summed_density.h), because the whole excess over-corrects where
+// particles close in on a wall.
+struct IisphRebaseStage {
+  const Real* rho_star;
+  const Real* predicted;
+  Real* rho_adv;
+  UPF_HD void operator()(std::uint32_t i) const {
+    if (rho_star[i] > predicted[i])
+      rho_adv[i] += kSummedDensityRelaxation * (rho_star[i] - predicted[i]);
   }
 };
 

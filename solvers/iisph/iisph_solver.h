@@ -9,7 +9,9 @@
 //   pressure      v_adv = v + dt a_other, rho_adv = rho + dt Drho/Dt(v_adv); pressures start at
 //                 half the previous step's (the paper's warm start) and are relaxed by Jacobi
 //                 iterations (omega = 0.5, the paper's) until the average compression of the
-//                 predicted densities is at most eta, as PCISPH's stopping test;
+//                 predicted densities is at most eta, as PCISPH's stopping test; with
+//                 summed_density_check, then checked against densities summed at x + dt v
+//                 and iterated on while those exceed eta;
 //   integration   reactions on bodies (boundary_reactions.h, P_i = p_i / rho_i^2), then
 //                 symplectic Euler with the final pressure accelerations.
 // The per-particle functions are in iisph_kernels.h.
@@ -29,9 +31,10 @@ namespace upf {
 struct IisphParams {
   double eta = 0;  // target average compression
   int min_iterations = 0, max_iterations = 0;
-  double omega = 0;            // Jacobi relaxation
-  double stop_percentile = 0;  // StoppingError: 0 the average
-  double wall_pressure = 0;    // boundary_pressure.h: 1 on, 0 Akinci's term alone
+  double omega = 0;                 // Jacobi relaxation
+  double stop_percentile = 0;       // StoppingError: 0 the average
+  double wall_pressure = 0;         // boundary_pressure.h: 1 on, 0 Akinci's term alone
+  double summed_density_check = 0;  // iisph_solve.h: 1 on
 };
 
 class IisphSolver final : public Solver {
@@ -49,8 +52,8 @@ class IisphSolver final : public Solver {
   // What the device pipeline needs to run this solver's step (device/): the solve's settings
   // (iisph_solve.h), the stopping test and the shared fluid state.
   IisphSettings settings() const {
-    return {params_.eta, params_.min_iterations, params_.max_iterations, params_.omega,
-            stopping_.is_average()};
+    return {params_.eta,   params_.min_iterations, params_.max_iterations,
+            params_.omega, stopping_.is_average(), params_.summed_density_check != 0};
   }
   double stop_percentile() const { return stopping_.percentile(); }
   std::string cannot_split() const override { return stopping_.cannot_split(); }
@@ -67,7 +70,9 @@ class IisphSolver final : public Solver {
   // neighbours read them, and ghosts on other ranks must carry them (particle_domain.h).
   FieldHandle<Real> inverse_diagonal_, boundary_divergence_, rho_adv_, predicted_, next_;
   FieldHandle<Vec3> v_adv_;
-  Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
+  FieldHandle<Vec3> x_star_;    // with summed_density_check only
+  FieldHandle<Real> rho_star_;  // with summed_density_check only
+  Real reference_speed_ = 0;    // sqrt(2 g H) of the initial liquid, for the CFL limit
   SolverStats stats_;
 };
 

@@ -53,6 +53,10 @@ TEST(DevicePipelineOmp, IisphDamBreakIsBitwiseTheCpuPath) {
   expect_parity(doc, 120);
   doc["materials"]["water"]["solver"] = {{"name", "iisph"}, {"stop_percentile", 95}};
   expect_parity(doc, 40);
+  // Checked against densities summed at the predicted positions (iisph_solve.h).
+  doc["materials"]["water"]["solver"] = {
+      {"name", "iisph"}, {"stop_percentile", 100}, {"summed_density_check", 1}};
+  expect_parity(doc, 60);
 }
 
 // Four bodies of densities 300 to 1500 dropped into a pool (samples/floating_objects.json, at

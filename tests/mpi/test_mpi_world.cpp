@@ -199,16 +199,19 @@ TEST(SplitWorld, ImplicitViscosityIsBitwiseTheOneRankRun) {
   }
 }
 
-// DFSPH checked against densities summed at the predicted positions (dfsph_summed_density.h):
-// the ghosts carry the predicted positions, and the rounds steer by global stopping errors; in a
-// periodic domain the images carry them shifted.
-TEST(SplitWorld, DfsphSummedDensityCheckIsBitwiseTheOneRankRun) {
-  auto doc = small_dam_break("dfsph");
-  doc["materials"]["water"]["solver"]["summed_density_check"] = 1;
-  expect_same_as_one_rank(doc, 60);
-  auto periodic = testing::periodic_dam_break("dfsph");
-  periodic["materials"]["water"]["solver"]["summed_density_check"] = 1;
-  expect_same_as_one_rank(periodic, 40);
+// DFSPH and IISPH checked against densities summed at the predicted positions
+// (dfsph_summed_density.h, iisph_solve.h): the ghosts carry the predicted positions, and the
+// rounds steer by global stopping errors; in a periodic domain the images carry them shifted.
+TEST(SplitWorld, SummedDensityChecksAreBitwiseTheOneRankRun) {
+  for (const std::string solver : {"dfsph", "iisph"}) {
+    SCOPED_TRACE(solver);
+    auto doc = small_dam_break(solver);
+    doc["materials"]["water"]["solver"]["summed_density_check"] = 1;
+    expect_same_as_one_rank(doc, 60);
+    auto periodic = testing::periodic_dam_break(solver);
+    periodic["materials"]["water"]["solver"]["summed_density_check"] = 1;
+    expect_same_as_one_rank(periodic, 40);
+  }
 }
 
 // Two liquids of different density (density_contrast.h): ghosts carry their masses and materials.

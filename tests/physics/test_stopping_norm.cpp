@@ -102,25 +102,33 @@ TEST(StoppingNorm, APercentileBoundsBetweenTheAverageAndTheLargest) {
   EXPECT_LT(p99.mean_iterations, largest.mean_iterations);
 }
 
-// DFSPH bounds a density predicted linearly from its velocities; the next step sums the density
-// where the particles went and finds more. Checked against the summed density
-// (summed_density_check, dfsph_summed_density.h), the solve holds that density below eta too, as
-// PCISPH's does.
-TEST(StoppingNorm, DfsphCheckingTheSummedDensityBoundsTheCompressionAtTheParticles) {
+// DFSPH and IISPH bound a density predicted linearly from their velocities; the next step sums
+// the density where the particles went and finds more. Checked against the summed density
+// (summed_density_check, dfsph_summed_density.h, iisph_solve.h), the solve holds that density
+// below eta too, as PCISPH's does.
+void expect_summed_check_bounds_the_particles(const std::string& solver, const std::string& paper) {
   const double eta = 0.01;
-  const Bounds linear = run("dfsph", eta, 100);
-  const Bounds summed = run("dfsph", eta, 100, true);
+  const Bounds linear = run(solver, eta, 100);
+  const Bounds summed = run(solver, eta, 100, true);
   testing::record_validation(
-      "largest compression at the particles, dfsph bounding the largest at eta 1 %",
-      "Bender & Koschier 2017: the linear prediction underestimates it", "above eta", "above 3 eta",
+      "largest compression at the particles, " + solver + " bounding the largest at eta 1 %",
+      paper + ": the linear prediction underestimates it", "above eta", "above 3 eta",
       linear.largest_at_particles);
   EXPECT_GT(linear.largest_at_particles, 3 * eta) << "the linear prediction already bounds it";
   testing::record_validation(
-      "largest compression at the particles, dfsph with summed_density_check at eta 1 %",
-      "summed at x + dt v* (as PCISPH, Solenthaler & Pajarola 2009)", "eta",
+      "largest compression at the particles, " + solver + " with summed_density_check at eta 1 %",
+      "summed at x + dt v (as PCISPH, Solenthaler & Pajarola 2009)", "eta",
       "below 1.5 eta (new neighbours the step's lists miss)", summed.largest_at_particles);
   EXPECT_LT(summed.largest_at_particles, 1.5 * eta);
   EXPECT_EQ(summed.at_maximum, 0);
+}
+
+TEST(StoppingNorm, DfsphCheckingTheSummedDensityBoundsTheCompressionAtTheParticles) {
+  expect_summed_check_bounds_the_particles("dfsph", "Bender & Koschier 2017");
+}
+
+TEST(StoppingNorm, IisphCheckingTheSummedDensityBoundsTheCompressionAtTheParticles) {
+  expect_summed_check_bounds_the_particles("iisph", "Ihmsen et al. 2014");
 }
 
 }  // namespace
