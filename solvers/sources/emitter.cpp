@@ -40,7 +40,9 @@ double particles_due(const EmitterDesc& desc, double travelled) {
 }
 
 Emitter::Emitter(EmitterDesc desc)
-    : desc_(std::move(desc)), column_layers_(desc_.opening.size(), 0) {
+    : desc_(std::move(desc)),
+      column_layers_(desc_.opening.size(), 0),
+      due_(desc_.opening.size(), 0) {
   factor_.reserve(desc_.opening.size());
   for (const Eigen::Vector3d& o : desc_.opening) factor_.push_back(desc_.profile.factor(o));
 }
@@ -88,7 +90,7 @@ SourceChange Emitter::apply(Particles& particles, const SourceStep& step) {
               to_vec3(desc_.direction * (speed * desc_.profile.factor(x - desc_.center)));
       }
   }
-  std::vector<std::uint64_t> due(factor_.size());
+  std::vector<std::uint64_t>& due = due_;  // kept between steps: no allocation per step
   std::uint64_t first = kNoLimit, last = 0, new_ids = 0;
   for (std::size_t i = 0; i < factor_.size(); ++i) {
     due[i] = layers_due(i, travelled_);

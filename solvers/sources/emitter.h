@@ -100,6 +100,7 @@ class Emitter : public ParticleSource {
   std::uint64_t layers_ = 0;    // the most layers of any column (every column's, when uniform)
   std::vector<double> factor_;  // each column's profile factor
   std::vector<std::uint64_t> column_layers_;  // each column's layers so far
+  std::vector<std::uint64_t> due_;            // apply()'s layers due per column
   std::uint64_t created_ = 0, returned_ = 0;  // for live_limit
 };
 
