@@ -19,6 +19,7 @@
 
 #include "device/device_particles.h"
 #include "device/device_primitives.h"
+#include "framework/boundary/slip_normal_fields.h"
 #include "framework/world/body_particle_stages.h"
 
 namespace upf::device {
@@ -65,10 +66,16 @@ class DeviceBodies {
   void place(DeviceParticles<Backend>& p, const std::vector<BodyPose>& poses,
              const std::string& local_field) {
     copy_to_device(poses_, poses);
-    run<Backend>(all_particles(p.size()),
-                 PlaceBodyParticlesStage{raw<BodyPose>(poses_), raw<BodyId>(p.body),
-                                         raw<Vec3>(p.vector_array(local_field)),
-                                         raw<Vec3>(p.position), raw<Vec3>(p.velocity)});
+    // With free-slip boundaries, their normals turn with the bodies (slip_normal.h).
+    vector<Vec3>* local_slip = p.find_vector(kBodySlipNormalField);
+    vector<Vec3>* slip = p.find_vector(kSlipNormalField);
+    const bool turn = local_slip != nullptr && slip != nullptr;
+    run<Backend>(
+        all_particles(p.size()),
+        PlaceBodyParticlesStage{raw<BodyPose>(poses_), raw<BodyId>(p.body),
+                                raw<Vec3>(p.vector_array(local_field)), raw<Vec3>(p.position),
+                                raw<Vec3>(p.velocity), turn ? raw<Vec3>(*local_slip) : nullptr,
+                                turn ? raw<Vec3>(*slip) : nullptr});
   }
 
   // One wrench per body id of `origins`; bodies without rigid particles get zero.

@@ -66,6 +66,15 @@ class DeviceParticles {
   // A named field's array; the object stays put (reordering swaps its contents).
   vector<Real>& scalar_array(const std::string& name) { return scalars_.at(name); }
   vector<Vec3>& vector_array(const std::string& name) { return vectors_.at(name); }
+  // The named field's array, or null when the particles have no such field.
+  vector<Vec3>* find_vector(const std::string& name) {
+    const auto it = vectors_.find(name);
+    return it == vectors_.end() ? nullptr : &it->second;
+  }
+  const vector<Vec3>* find_vector(const std::string& name) const {
+    const auto it = vectors_.find(name);
+    return it == vectors_.end() ? nullptr : &it->second;
+  }
 
   // Device memory held by every array and field.
   std::size_t bytes() const {

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "device/solver_part.h"
+#include "framework/boundary/slip_normal_fields.h"
 #include "solvers/fluid/fluid_stages.h"
 
 namespace upf::device {
@@ -152,6 +153,12 @@ class FluidPart final : public SolverPart<Backend> {
  private:
   OwnedMaterials owned_materials() const { return {raw<std::uint8_t>(owns_), owns_.size()}; }
 
+  // The free-slip walls' normals, or null without any (framework/boundary/slip_normal.h).
+  static const Vec3* slip_normal(const PipelineState<Backend>& state) {
+    const auto* normal = state.particles.find_vector(kSlipNormalField);
+    return normal ? raw<Vec3>(*normal) : nullptr;
+  }
+
   FluidView fluid_view(const PipelineState<Backend>& state) const {
     const DeviceParticles<Backend>& p = state.particles;
     FluidView f;
@@ -176,6 +183,7 @@ class FluidPart final : public SolverPart<Backend> {
     f.surface.materials = std::uint32_t(setup_.rest_density.size());
     f.surface.has_adhesion = setup_.has_adhesion;
     if (surface_normal_) f.surface.normal = raw<Vec3>(*surface_normal_);
+    f.slip_normal = slip_normal(state);
     return f;
   }
 

@@ -25,10 +25,6 @@ namespace upf {
 
 class World;
 
-// The fields of body particles: position and outward normal in the body's frame.
-inline constexpr const char* kBodyLocalPositionField = "body.local_position";
-inline constexpr const char* kBodyLocalNormalField = "body.local_normal";
-
 class PenetrationGuard {
  public:
   // `layer_depth`: how deep under the surface the outer sample layer lies, m; `clearance`: how

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "coupling/mesh/closed_mesh.h"
+#include "framework/boundary/slip_normal_fields.h"
 #include "framework/core/errors.h"
 #include "framework/core/state_stream.h"
 #include "framework/core/vec3_eigen.h"
@@ -198,10 +199,16 @@ void RigidBodySystem::place_particles(World& world, double dt) {
     return;
   }
   Particles& p = world.particles();
-  world.executor().run(all_particles(p.size()),
-                       PlaceBodyParticlesStage{poses.data(), p.body.data(),
-                                               p.find_vector(kBodyLocalPositionField)->data(),
-                                               p.position.data(), p.velocity.data()});
+  // With free-slip boundaries, their normals turn with the bodies (slip_normal.h).
+  std::vector<Vec3>* local_slip = p.find_vector(kBodySlipNormalField);
+  std::vector<Vec3>* slip = p.find_vector(kSlipNormalField);
+  const bool turn = local_slip != nullptr && slip != nullptr;
+  world.executor().run(
+      all_particles(p.size()),
+      PlaceBodyParticlesStage{poses.data(), p.body.data(),
+                              p.find_vector(kBodyLocalPositionField)->data(), p.position.data(),
+                              p.velocity.data(), turn ? local_slip->data() : nullptr,
+                              turn ? slip->data() : nullptr});
 }
 
 void RigidBodySystem::advance(World& world, double dt) {

@@ -27,6 +27,11 @@
 
 namespace upf {
 
+// The fields of body particles: position and outward normal (outer-layer samples; zero on inner
+// layers) in the body's frame.
+inline constexpr const char* kBodyLocalPositionField = "body.local_position";
+inline constexpr const char* kBodyLocalNormalField = "body.local_normal";
+
 // A body's frame: x = origin + rotation r0, v = velocity + angular_velocity x (x - origin).
 struct BodyPose {
   Vec3d origin;
@@ -41,11 +46,18 @@ struct PlaceBodyParticlesStage {
   const Vec3* local;  // the particle's position in its body's frame
   Vec3* x;
   Vec3* v;
+  // With free-slip boundaries (slip_normal.h): the normal in the body's frame, and the world
+  // frame's it writes, for every body (static ones too: their world normals are not set
+  // elsewhere). Null without.
+  const Vec3* local_slip_normal = nullptr;
+  Vec3* slip_normal = nullptr;
 
   UPF_HD void operator()(std::uint32_t i) const {
     const BodyId b = body[i];
-    if (b == kNoBody || !poses[b].moves) return;
+    if (b == kNoBody) return;
     const BodyPose& f = poses[b];
+    if (slip_normal) slip_normal[i] = to_real(f.rotation * to_double(local_slip_normal[i]));
+    if (!f.moves) return;
     const Vec3d r = f.rotation * to_double(local[i]);
     x[i] = to_real(f.origin + r);
     v[i] = to_real(f.velocity + cross(f.angular_velocity, r));

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "framework/boundary/akinci_volume.h"
+#include "framework/boundary/slip_normal.h"
 #include "framework/core/deterministic_sum.h"
 #include "framework/core/errors.h"
 #include "framework/core/stopwatch.h"
@@ -128,6 +129,9 @@ void World::prepare() {
   grid_.find_neighbours(particles_, kBoundaryMask, kBoundaryMask, settings_.support_radius(),
                         executor_, boundary);
   compute_boundary_volumes(particles_, kBoundaryMask, boundary, kernel(), executor_);
+  const std::vector<std::uint8_t> free_slip = free_slip_materials(materials_);
+  if (std::find(free_slip.begin(), free_slip.end(), 1) != free_slip.end())
+    compute_slip_normals(particles_, free_slip, boundary, kernel(), executor_);
   if (periodic_images_only_) domain_->drop_ghosts();
   for (auto& b : bodies_) b->prepare(*this);
 

@@ -2,10 +2,21 @@
 
 #include <algorithm>
 
+#include "framework/boundary/slip_normal.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_forces.h"
 
 namespace upf {
+
+namespace {
+
+// The free-slip walls' normals, or null without any (framework/boundary/slip_normal.h).
+const Vec3* slip_normal(const World& world) {
+  const std::vector<Vec3>* normal = world.particles().find_vector(kSlipNormalField);
+  return normal ? normal->data() : nullptr;
+}
+
+}  // namespace
 
 void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& materials) {
   Particles& p = world.particles();
@@ -49,6 +60,7 @@ FluidView FluidSolverState::begin_step(World& world) {
   f.surface.normal = surface_normal;
   wall_velocity = wall_list >= 0 ? world.particles()[wall_velocity_field].data() : nullptr;
   f.wall_velocity = wall_velocity;
+  f.slip_normal = slip_normal(world);
   if (implicit_viscosity()) {
     Particles& p = world.particles();
     viscosity_arrays =

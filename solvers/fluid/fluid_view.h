@@ -43,6 +43,9 @@ struct FluidView {
   // With wall friction (a liquid's boundary_viscosity > 0): every boundary particle's velocity in
   // the viscous sums, extrapolated from the liquid (wall_velocity.h). Null: their own.
   const Vec3* wall_velocity = nullptr;
+  // With free-slip boundaries (a frozen or rigid material's free_slip): every particle's wall
+  // normal, zero where no-slip (framework/boundary/slip_normal.h). Null: all no-slip.
+  const Vec3* slip_normal = nullptr;
 };
 
 // The kernel gradients grad W_ij of a step's fluid pairs, by fluid-list slot k of particle i:

@@ -7,6 +7,18 @@
 // (what fluid_forces.h used before), the liquid slipped: a shear wave between two walls decayed
 // 12 % too slowly with the slip, and a wall particle outside the liquid's reach kept its own.
 // Only with a liquid's boundary_viscosity > 0 (FluidSolverState asks for the list then).
+//
+// Free-slip walls (a boundary material's "free_slip": 1; the same paper's section 2.3, there
+// with ghost velocities) take the liquid's own mean velocity along their surface and the no-slip
+// one across it:
+//   v~_b = vbar + n n . (2 v_b - 2 vbar),   vbar = sum_i v_i W_ib / sum_i W_ib,
+// with n_b the wall's normal (framework/boundary/slip_normal.h), so a liquid sliding along the
+// wall as a whole feels no friction there; its motion into and off the wall, and each particle's
+// departure from its neighbours' mean, are damped. A jet on a plate showed why it matters: with
+// walls that only push, the thin sheet's jitter normal to the plate is rectified, and the sheet
+// left moving back towards the jet, 5 % of the jet's force too much (docs/emitters.md). Explicit
+// viscosity only: the implicit solve would hold vbar at the step's start, and a stiff liquid
+// could then not slide faster than it did (World::prepare refuses the pair).
 // C++17: nvcc builds it.
 #pragma once
 
@@ -16,6 +28,13 @@ namespace upf {
 
 // The field FluidSolverState declares for the velocities (the device pipeline finds it by name).
 inline constexpr const char* kWallVelocityField = "fluid.wall_velocity";
+
+// Whether b is a free-slip wall, and then its normal.
+UPF_HD inline bool free_slip_normal(const FluidView& f, std::uint32_t b, Vec3& n) {
+  if (!f.slip_normal) return false;
+  n = f.slip_normal[b];
+  return squared_norm(n) > 0;
+}
 
 // Over all particles; only boundary particles have entries in `liquid_of_boundary`.
 struct WallVelocityStage {
@@ -34,7 +53,14 @@ struct WallVelocityStage {
       sum += f.v[i] * w;
       weight += w;
     }
-    wall_velocity[b] = weight > 0 ? f.v[b] * Real(2) - sum / weight : f.v[b];
+    if (!(weight > 0)) {
+      wall_velocity[b] = f.v[b];
+      return;
+    }
+    const Vec3 mean = sum / weight;
+    const Vec3 no_slip = f.v[b] * Real(2) - mean;
+    Vec3 n;
+    wall_velocity[b] = free_slip_normal(f, b, n) ? mean + n * dot(n, no_slip - mean) : no_slip;
   }
 };
 

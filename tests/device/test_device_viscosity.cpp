@@ -32,5 +32,14 @@ TEST(DevicePipelineOmp, NoSlipWallsOfTheExplicitViscosityAreBitwiseTheCpuPath) {
   expect_parity(viscous_cube_shot_into_water("dfsph", false), 60);
 }
 
+// Free-slip walls and body (framework/boundary/slip_normal.h): the body's normals turn with it in
+// the placement stage, and the walls' velocities take them.
+TEST(DevicePipelineOmp, FreeSlipWallsAndBodiesAreBitwiseTheCpuPath) {
+  auto doc = viscous_cube_shot_into_water("pcisph", false);
+  doc["materials"]["walls"]["free_slip"] = 1;
+  doc["materials"]["solid"]["free_slip"] = 1;
+  expect_parity(doc, 60);
+}
+
 }  // namespace
 }  // namespace upf

@@ -162,12 +162,13 @@ TEST(Emitters, ATankFedByAHoseFillsAtQOverItsArea) {
 // jet through theta; a flat plate splits the sheet, and its normal force is the test.) Without
 // gravity the jet keeps its speed, and sinks take the sheet away once it leaves the plate, so
 // nothing comes back. The plate is a heavy free body (steel a dozen times over: it drifts at
-// under 2 % of the jet's speed), whose fluid force is the reaction of the Akinci boundary forces.
-// Measured at 2 cm over 0.4-0.7 s: 1.05 times the reference normal to the jet (1.05-1.06 at
-// 1.25 cm; the frame-mean force swings from 1.00 to 1.14), because the sheet leaves the plate
-// moving back towards the jet at about 0.09 m/s (4.6 % of V): a systematic excess the 5 %
-// does not allow, still open (docs/emitters.md). The bound here is 8 %: a missing or doubled
-// reaction, or a force off the plate's normal, fails it.
+// under 2 % of the jet's speed), whose fluid force is the reaction of the Akinci boundary forces
+// and the wall viscosity. The plate is a free-slip wall (its material's free_slip, with the
+// water's own viscosity as boundary_viscosity): the frictionless plate of the reference, whose
+// wall viscosity damps only the sheet's motion into and off it. Measured over 0.4-0.7 s: 0.987
+// (normal) and 0.989 (tilted) at 2 cm, 1.004 and 0.994 at 1.25 cm. With walls that only push
+// (no wall viscosity) the sheet's jitter normal to the plate is rectified: it leaves the plate
+// moving back towards the jet and the force reads 1.05 (2 cm and 1.25 cm; docs/emitters.md).
 struct JetOnPlate {
   double ratio = 0;       // the normal force's mean over the reference's
   double off_normal = 0;  // the mean force's part along the plate, over the reference
@@ -182,9 +183,13 @@ JetOnPlate jet_on_a_plate(double tilt_degrees) {
       {"gravity", {0, 0, 0}},
       {"particle_spacing", spacing},
       {"materials",
-       {{"water", {{"type", "liquid"}, {"density", 1000}, {"viscosity", 0.001}}},
+       {{"water",
+         {{"type", "liquid"},
+          {"density", 1000},
+          {"viscosity", 0.001},
+          {"boundary_viscosity", 0.001}}},
         {"walls", {{"type", "frozen"}}},
-        {"heavy", {{"type", "rigid"}, {"density", 1e5}}}}},
+        {"heavy", {{"type", "rigid"}, {"density", 1e5}, {"free_slip", 1}}}}},
       {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {0.8, 0.6, 0.6}}}}},
       {"emitters",
        {{{"material", "water"},
@@ -235,9 +240,9 @@ TEST(Emitters, AJetOnAPlatePushesItWithRhoQV) {
   const JetOnPlate r = jet_on_a_plate(0);
   record_validation("jet force on a normal plate / rho A (V - u)^2, mean over 0.4-0.7 s",
                     "momentum balance, F = rho Q V (White, Fluid Mechanics, ex. 3.9, 3.10)", "1",
-                    "within 8 %", r.ratio);
+                    "within 5 %", r.ratio);
   EXPECT_LT(r.drift, 0.02);
-  EXPECT_NEAR(r.ratio, 1.0, 0.08);
+  EXPECT_NEAR(r.ratio, 1.0, 0.05);
   EXPECT_LT(r.off_normal, 0.05);
 }
 
@@ -246,9 +251,9 @@ TEST(Emitters, AJetOnATiltedPlatePushesItAlongItsNormalWithRhoQVCosAlpha) {
   record_validation(
       "jet force on a plate tilted 30 degrees, along its normal / rho Q V cos(alpha)",
       "momentum balance normal to a frictionless plate (White, Fluid Mechanics, P3.50)", "1",
-      "within 8 %", r.ratio);
+      "within 5 %", r.ratio);
   EXPECT_LT(r.drift, 0.02);
-  EXPECT_NEAR(r.ratio, 1.0, 0.08);
+  EXPECT_NEAR(r.ratio, 1.0, 0.05);
   EXPECT_LT(r.off_normal, 0.05) << "a frictionless plate is pushed along its normal";
 }
 
@@ -297,9 +302,10 @@ TEST(Emitters, AChannelWithInletAndOutletHoldsASteadyVolume) {
   double spread = 0;
   for (std::size_t k = 0; k < 4; ++k)
     spread = std::max(spread, std::abs(volume[k] / span[k] - mean) / mean);
-  record_validation("open channel: largest deviation of a second's mean volume from the mean, "
-                    "6-10 s",
-                    "mass conservation in steady flow", "0", "within 1 %", spread);
+  record_validation(
+      "open channel: largest deviation of a second's mean volume from the mean, "
+      "6-10 s",
+      "mass conservation in steady flow", "0", "within 1 %", spread);
   record_validation("open channel: outlet rate / inlet rate, 6-10 s",
                     "mass conservation in steady flow", "1", "within 1 %", out / in);
   EXPECT_GT(mean, 0.5 * 1.0 * 0.1 * 0.02) << "the channel holds water";
