@@ -7,9 +7,10 @@ std::vector<ParamSpec> contact_params() {
       {"friction", "1", 0.5, 0, 10, "Coulomb friction coefficient of body contacts (Bullet)"},
       {"restitution", "1", 0.1, 0, 1, "restitution coefficient of body contacts (Bullet)"},
       {"free_slip", "1", 0, 0, 1,
-       "1: liquid slides along this boundary freely, a liquid's boundary_viscosity damping only "
-       "its motion into and off the surface (Adami et al. 2012 free-slip wall; "
-       "docs/viscosity.md); 0: no-slip",
+       "1: liquid slides along this boundary without friction; a liquid's boundary_viscosity "
+       "damps its motion into and off the surface and its particles' jitter, not its sliding "
+       "(Adami et al. 2012 free-slip wall; explicit viscosity only; docs/viscosity.md); 0: "
+       "no-slip",
        true},
   };
 }
