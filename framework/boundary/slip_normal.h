@@ -1,8 +1,9 @@
 // The wall normals of free-slip boundaries (a frozen or rigid material's "free_slip": 1), for the
 // free-slip wall (Adami, Hu & Adams 2012, "A generalized wall boundary condition for smoothed
-// particle hydrodynamics", J. Comput. Phys. 231, section 2.3, there with ghost velocities): the
-// wall viscosity's pair term keeps only its part along the wall's normal, so it damps motion into
-// and off the wall and never sliding along it (solvers/fluid/wall_velocity.h).
+// particle hydrodynamics", J. Comput. Phys. 231, section 2.3, there with ghost velocities): in
+// the viscous sums the wall takes the liquid's mean velocity along its surface and the no-slip one
+// across it, so the wall viscosity never resists the liquid sliding along it as a whole
+// (solvers/fluid/wall_velocity.h).
 //
 // A particle's normal is the axis of its boundary's shape around it,
 //   g_b = sum_k (x_b - x_k) W_bk   over the boundary neighbours k of b's own body (or, for
