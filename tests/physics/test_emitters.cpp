@@ -165,10 +165,11 @@ TEST(Emitters, ATankFedByAHoseFillsAtQOverItsArea) {
 // under 2 % of the jet's speed), whose fluid force is the reaction of the Akinci boundary forces
 // and the wall viscosity. The plate is a free-slip wall (its material's free_slip, with the
 // water's own viscosity as boundary_viscosity): the frictionless plate of the reference, whose
-// wall viscosity damps the sheet's motion into and off it and its jitter, not its sliding. Measured over 0.4-0.7 s: 0.987
-// (normal) and 0.989 (tilted) at 2 cm, 1.004 and 0.994 at 1.25 cm. With walls that only push
-// (no wall viscosity) the sheet's jitter normal to the plate is rectified: it leaves the plate
-// moving back towards the jet and the force reads 1.05 (2 cm and 1.25 cm; docs/emitters.md).
+// wall viscosity damps the sheet's motion into and off it and its jitter, not its sliding. Measured
+// over 0.4-0.7 s: 0.987 (normal) and 0.989 (tilted) at 2 cm, 1.004 and 0.994 at 1.25 cm. With walls
+// that only push (no wall viscosity) the sheet's jitter normal to the plate is rectified: it leaves
+// the plate moving back towards the jet and the force reads 1.05 (2 cm and 1.25 cm;
+// docs/emitters.md).
 struct JetOnPlate {
   double ratio = 0;       // the normal force's mean over the reference's
   double off_normal = 0;  // the mean force's part along the plate, over the reference
