@@ -3,7 +3,7 @@
 // penetration guard. The body system itself (Bullet, on the host) sends poses and gets back six
 // numbers per body and the guard's few hits, so the particles never leave the device.
 //
-// Per-body sums are exact fixed-point (BodyWrench): a reduce_by_key over the rigid particles
+// Per-body sums are exact fixed-point (BodyWrench): a reduce_by_key over the body particles
 // sorted by body gives the CPU's bits whatever order the device adds them in. The guard's hits
 // come back in particle-id order, as the CPU sorts them.
 #pragma once
@@ -26,12 +26,10 @@ namespace upf::device {
 
 namespace bodies_detail {
 
+// The particles of any body: rigid ones, and a static or kinematic body's frozen ones.
 struct IsBodyParticle {
-  const ParticleType* type;
   const BodyId* body;
-  UPF_HD bool operator()(std::uint32_t i) const {
-    return type[i] == ParticleType::Rigid && body[i] != kNoBody;
-  }
+  UPF_HD bool operator()(std::uint32_t i) const { return body[i] != kNoBody; }
 };
 
 struct BodyOf {
@@ -78,7 +76,7 @@ class DeviceBodies {
                                 turn ? raw<Vec3>(*slip) : nullptr});
   }
 
-  // One wrench per body id of `origins`; bodies without rigid particles get zero.
+  // One wrench per body id of `origins`; bodies without particles get zero.
   void wrenches(const DeviceParticles<Backend>& p, const vector<Vec3>& force,
                 const std::vector<Vec3d>& origins, std::vector<BodyWrench>& out) {
     using namespace bodies_detail;
@@ -86,13 +84,13 @@ class DeviceBodies {
     const std::size_t n = p.size();
     if (force.size() != n || n == 0) return;
     copy_to_device(origins_, origins);
-    // The rigid particles, sorted by body (stable: index order within a body, though any order
+    // The body particles, sorted by body (stable: index order within a body, though any order
     // gives the same exact sums).
     rigid_.resize(n);
     const auto last =
         thrust::copy_if(Backend::policy(), thrust::counting_iterator<std::uint32_t>(0),
                         thrust::counting_iterator<std::uint32_t>(std::uint32_t(n)), rigid_.begin(),
-                        IsBodyParticle{raw<ParticleType>(p.type), raw<BodyId>(p.body)});
+                        IsBodyParticle{raw<BodyId>(p.body)});
     const std::size_t count = std::size_t(last - rigid_.begin());
     if (count == 0) return;
     rigid_.resize(count);

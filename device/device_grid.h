@@ -27,6 +27,7 @@
 #include "framework/core/particle_type.h"
 #include "framework/neighbours/morton.h"
 #include "framework/neighbours/neighbour_list.h"
+#include "framework/particles/particles.h"
 
 namespace upf::device {
 
@@ -43,6 +44,13 @@ namespace grid_detail {
 
 UPF_HD inline bool type_in(TypeMask mask, ParticleType t) {
   return ((unsigned(mask) >> unsigned(t)) & 1u) != 0;
+}
+
+// query_takes (particle_type.h) on the device: whether particle i's neighbours are listed.
+UPF_HD inline bool query_takes_particle(TypeMask query, const ParticleType* type,
+                                        const BodyId* body, std::size_t i) {
+  if (!type_in(query, type[i])) return false;
+  return (query & kOfBodiesOnly) == 0 || body[i] != kNoBody;
 }
 
 struct Vec3Min {
@@ -208,10 +216,11 @@ struct CountStage {
   GridView g;
   ListRequest r;
   const ParticleType* type;
+  const BodyId* body;
   std::uint32_t* count[kMaxLists];  // count[l][i + 1]
   UPF_HD void operator()(std::size_t i) const {
     std::uint32_t c0 = 0, c1 = 0, c2 = 0, c3 = 0;
-    if (type_in(r.query, type[i])) {
+    if (query_takes_particle(r.query, type, body, i)) {
       auto visit = [&](std::uint32_t, ParticleType t) {
         const std::uint32_t m = r.lists_of(t);
         c0 += m & 1u;
@@ -232,10 +241,11 @@ struct FillStage {
   GridView g;
   ListRequest r;
   const ParticleType* type;
+  const BodyId* body;
   const std::uint32_t* offsets[kMaxLists];
   std::uint32_t* indices[kMaxLists];
   UPF_HD void operator()(std::size_t i) const {
-    if (!type_in(r.query, type[i])) return;
+    if (!query_takes_particle(r.query, type, body, i)) return;
     auto first = [&](int l) { return l < r.lists ? indices[l] + offsets[l][i] : nullptr; };
     std::uint32_t *n0 = first(0), *n1 = first(1), *n2 = first(2), *n3 = first(3);
     auto visit = [&](std::uint32_t j, ParticleType t) {
@@ -322,10 +332,12 @@ class DeviceGrid {
            bytes_of(cell_neighbours_);
   }
 
-  // For every particle whose type is in `query`, the others within `radius` whose type is in
-  // targets[l], into outs[l] (up to kMaxLists), as NeighbourGrid::find_neighbours.
-  void find_neighbours(const ParticleType* type, TypeMask query, const TypeMask* targets, int lists,
-                       Real radius, DeviceNeighbourList<Backend>* const* outs) {
+  // For every particle whose type is in `query` (with kOfBodiesOnly, of a body: `body`), the
+  // others within `radius` whose type is in targets[l], into outs[l] (up to kMaxLists), as
+  // NeighbourGrid::find_neighbours.
+  void find_neighbours(const ParticleType* type, const BodyId* body, TypeMask query,
+                       const TypeMask* targets, int lists, Real radius,
+                       DeviceNeighbourList<Backend>* const* outs) {
     using namespace grid_detail;
     ListRequest request{query, {}, lists, radius * radius, 0};
     for (int l = 0; l < lists; ++l) {
@@ -334,14 +346,14 @@ class DeviceGrid {
         if (type_in(targets[l], ParticleType(t))) request.lists_of_type |= 1u << (4 * t + l);
     }
     const GridView g = view();
-    CountStage count{g, request, type, {}};
+    CountStage count{g, request, type, body, {}};
     for (int l = 0; l < lists; ++l) {
       outs[l]->offsets.resize(n_ + 1);
       outs[l]->offsets[0] = 0;
       count.count[l] = raw<std::uint32_t>(outs[l]->offsets);
     }
     for_each_index<Backend>(n_, count);
-    FillStage fill{g, request, type, {}, {}};
+    FillStage fill{g, request, type, body, {}, {}};
     for (int l = 0; l < lists; ++l) {
       auto& offsets = outs[l]->offsets;
       thrust::inclusive_scan(Backend::policy(), offsets.begin(), offsets.end(), offsets.begin());

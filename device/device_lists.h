@@ -31,7 +31,7 @@ class DeviceLists {
   }
 
   // Every list from the grid built over the current positions.
-  void update(DeviceGrid<Backend>& grid, const ParticleType* type) {
+  void update(DeviceGrid<Backend>& grid, const ParticleType* type, const BodyId* body) {
     std::vector<bool> done(requests_.size(), false);
     for (std::size_t a = 0; a < requests_.size(); ++a) {
       if (done[a]) continue;
@@ -49,7 +49,8 @@ class DeviceLists {
         ++count;
       }
       // Targets beyond kMaxLists with the same query and radius are left for a later `a`.
-      grid.find_neighbours(type, requests_[a].query, targets, count, requests_[a].radius, outs);
+      grid.find_neighbours(type, body, requests_[a].query, targets, count, requests_[a].radius,
+                           outs);
     }
   }
 

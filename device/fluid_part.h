@@ -20,8 +20,8 @@ namespace upf::device {
 // What a pressure method sees of a step: the view, the owned particles and the shared buffers.
 struct FluidStep {
   FluidView f;
-  NeighbourView fluid_of_boundary;  // rigid -> liquid; null offsets: no reactions wanted
-  Vec3* boundary_force;             // the reactions on rigid particles
+  NeighbourView fluid_of_boundary;  // body particles -> liquid; null offsets: no reactions wanted
+  Vec3* boundary_force;             // the reactions on body particles
   ParticleRange owned;
   OwnedMaterials owns;
   std::size_t n;  // all particles
@@ -51,8 +51,7 @@ class FluidPart final : public SolverPart<Backend> {
     fluid_list_ = state.lists.request(kLiquidMask, kLiquidMask);
     boundary_list_ = state.lists.request(kLiquidMask, kBoundaryMask);
     if (setup_.wall_friction) wall_list_ = state.lists.request(kBoundaryMask, kLiquidMask);
-    if (setup_.reactions)
-      reaction_list_ = state.lists.request(mask_of(ParticleType::Rigid), kLiquidMask);
+    if (setup_.reactions) reaction_list_ = state.lists.request(setup_.reaction_query, kLiquidMask);
   }
 
   void bind(PipelineState<Backend>& state) override {
@@ -100,6 +99,11 @@ class FluidPart final : public SolverPart<Backend> {
       boundary_gradient_.resize(n);
       other_acceleration_.resize(n);
       step.f = fluid_view(state);
+      if (setup_.body_wall_reactions) {
+        step.f.body_wall_factor = raw<Real>(state.particles.scalar_array(kBodyWallFactorField));
+        step.f.body_wall_floor = raw<Real>(state.particles.scalar_array(kBodyWallFloorField));
+        step.f.body = raw<BodyId>(state.particles.body);
+      }
       ImplicitViscosityStep viscous;
       ImplicitViscosityArrays viscosity_arrays{};
       if (setup_.implicit_viscosity) {
@@ -122,7 +126,8 @@ class FluidPart final : public SolverPart<Backend> {
           exec, step.owned, step.f,
           {step.fluid_gradient, step.boundary_gradient, step.other_acceleration, step.density,
            liquid_force, step.pressure, surface_normal_ ? raw<Vec3>(*surface_normal_) : nullptr,
-           wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{}, wall_velocity, n},
+           wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{}, wall_velocity, n,
+           step.fluid_of_boundary, step.boundary_force, step.owns},
           state.world.gravity, viscous);
       viscosity_iterations_ = viscosity_stats.iterations;
       method_.non_pressure(exec, step);

@@ -219,7 +219,7 @@ class SolverPipeline final : public DevicePipeline {
     }
     if (state_.ghosts) images_.append(p, &state_.boundary_force, &state_.liquid_force);
     build();
-    state_.lists.update(grid_, raw<ParticleType>(p.type));
+    state_.lists.update(grid_, raw<ParticleType>(p.type), raw<BodyId>(p.body));
   }
 
   // CouplingArrays::reset: the active arrays sized and zeroed.

@@ -227,7 +227,7 @@ void RigidBodySystem::advance(World& world, double dt) {
                                      origins.data()};
     for (std::size_t i = 0; i < p.owned_size(); ++i) {
       const BodyId b = p.body[i];
-      if (b == kNoBody || p.type[i] != ParticleType::Rigid) continue;
+      if (b == kNoBody) continue;  // a static or kinematic body's frozen particles count too
       sums[std::size_t(b)] = BodyWrenchPlus{}(sums[std::size_t(b)], wrench(std::uint32_t(i)));
     }
   }

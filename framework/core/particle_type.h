@@ -26,6 +26,17 @@ constexpr bool in_mask(TypeMask m, ParticleType t) {
   return (m & mask_of(t)) != 0;
 }
 
+// A flag of a neighbour query beside the type bits: of the query's types, only the particles of a
+// body (a body id set). The reactions on a static body need the liquid around its particles, not
+// around every wall particle, whose type (frozen) it shares.
+constexpr TypeMask kOfBodiesOnly = 0x10;
+
+// Whether a neighbour query `query` lists the neighbours of a particle of type t (of_a_body: the
+// particle belongs to a body).
+constexpr bool query_takes(TypeMask query, ParticleType t, bool of_a_body) {
+  return in_mask(query, t) && (of_a_body || (query & kOfBodiesOnly) == 0);
+}
+
 constexpr std::string_view to_string(ParticleType t) {
   switch (t) {
     case ParticleType::Liquid:

@@ -231,6 +231,12 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
   const Real r2 = radius * radius;
   TypeMask any_target = 0;
   for (TypeMask t : targets) any_target |= t;
+  const BodyId* body = particles.body.data();
+  // Whether sorted slot s is a query particle (kOfBodiesOnly: only those of a body).
+  auto takes = [&](std::uint32_t s) {
+    return query_takes(query, sorted_type_[s],
+                       (query & kOfBodiesOnly) != 0 && body[sorted_[s]] != kNoBody);
+  };
 
   // One pass: each thread appends its particles' neighbours to its own buffers and records where
   // they are; the final CSR arrays are then assembled by copying. A particle's neighbours are
@@ -259,8 +265,7 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
       const std::uint32_t first = cell_begin_[std::size_t(cell)];
       const std::uint32_t last = cell_begin_[std::size_t(cell) + 1];
       bool any_query = false;
-      for (std::uint32_t s = first; s < last; ++s)
-        any_query = any_query || in_mask(query, sorted_type_[s]);
+      for (std::uint32_t s = first; s < last; ++s) any_query = any_query || takes(s);
       if (!any_query) continue;
       CellRange ranges[27];
       const int found = neighbour_cells(std::size_t(cell), ranges);
@@ -274,7 +279,7 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
       Real* d2 = cand.d2.data();
       std::uint32_t* hit = cand.hit.data();
       for (std::uint32_t s = first; s < last; ++s) {
-        if (!in_mask(query, sorted_type_[s])) continue;
+        if (!takes(s)) continue;
         const std::uint32_t i = sorted_[s];
         for (std::size_t l = 0; l < lists; ++l)
           my_segments[l].push_back({i, std::uint32_t(my_buffers[l].size())});

@@ -32,6 +32,18 @@ namespace upf {
 inline constexpr const char* kBodyLocalPositionField = "body.local_position";
 inline constexpr const char* kBodyLocalNormalField = "body.local_normal";
 
+// The query of the neighbour lists over which solvers gather their reactions on bodies: the rigid
+// particles, and where static or kinematic bodies exist, the frozen particles of a body too (their
+// fluid force is reported like a free body's; the walls' frozen particles take none). 0 without
+// body particles. Not for device code.
+inline TypeMask body_reaction_query(const Particles& p) {
+  bool frozen_bodies = false;
+  for (std::size_t i = 0; i < p.size() && !frozen_bodies; ++i)
+    frozen_bodies = p.type[i] == ParticleType::Frozen && p.body[i] != kNoBody;
+  if (frozen_bodies) return kBoundaryMask | kOfBodiesOnly;
+  return p.count(ParticleType::Rigid) > 0 ? mask_of(ParticleType::Rigid) : TypeMask(0);
+}
+
 // A body's frame: x = origin + rotation r0, v = velocity + angular_velocity x (x - origin).
 struct BodyPose {
   Vec3d origin;

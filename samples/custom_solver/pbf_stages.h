@@ -25,6 +25,7 @@ struct PbfPredictStage {
 
 // PBF has no pressure term of its own at the step's start: the corrections add their reactions.
 struct NoPressureFactor {
+  static constexpr bool kPerDensitySquared = true;  // (a wall pressure would average it)
   UPF_HD Real operator()(std::uint32_t) const { return 0; }
 };
 

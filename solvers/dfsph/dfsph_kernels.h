@@ -137,6 +137,7 @@ struct DfsphIntegrateStage {
 
 // The pressure factor P_i of boundary_reactions.h: the step's total K_i.
 struct TotalStiffness {
+  static constexpr bool kPerDensitySquared = true;
   const Real* k_total;
   UPF_HD Real operator()(std::uint32_t i) const { return k_total[i]; }
 };

@@ -14,7 +14,8 @@
 // (mirrored_pressure_factor), so every pressure solver sees it; the hydrostatic part, which does
 // not depend on this step's pressure, is an acceleration fixed for the step
 // (boundary_hydrostatic_acceleration, added to a_other), which leaves the solvers' systems alone.
-// Frozen walls take no reactions, so momentum exchange with bodies is unchanged.
+// Walls take no reactions; the frozen particles of static and kinematic bodies take both parts
+// back (boundary_reactions.h), so their reported fluid force is what the fluid feels from them.
 //
 // Why (docs/boundary-pressure.md has the measurements). With P_i alone, a wall pushes its first
 // fluid layer with half the force the fluid above pushes it down with: in a tank at rest that

@@ -37,6 +37,10 @@ template __global__ void run_stage(
 template __global__ void run_stage(
     BoundaryReactionStage<PressureOverDensitySquared, KernelSetPressureGradient<MullerKernelSet>>,
     ParticleRange);
+template __global__ void run_stage(BodyWallFactorStage<PressureOverRestDensitySquared>,
+                                   ParticleRange);
+template __global__ void run_stage(BodyWallFloorStage, ParticleRange);
+template __global__ void run_stage(BodyWallHydrostaticReactionStage, ParticleRange);
 
 template __global__ void run_stage(PcisphPredictStage, ParticleRange);
 template __global__ void run_stage(PcisphCorrectPressureStage, ParticleRange);

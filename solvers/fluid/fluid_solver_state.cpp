@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "framework/boundary/slip_normal.h"
+#include "framework/world/body_particle_stages.h"
 #include "framework/world/world.h"
 #include "solvers/fluid/fluid_forces.h"
 
@@ -24,9 +25,15 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   pressure_field = p.declare_scalar("pressure", 0, true);
   pressure_acceleration_field = p.declare_scratch_vector(kPressureAccelerationField);
   lists.request(world);
-  // Reactions are gathered from the rigid side: for each rigid particle, its liquid neighbours.
-  if (world.coupling().active(CouplingArray::BoundaryForce) && p.count(ParticleType::Rigid) > 0)
-    reaction_list = world.request_neighbours(mask_of(ParticleType::Rigid), kLiquidMask);
+  // Reactions are gathered from the bodies' side: for each body particle, its liquid neighbours.
+  reaction_query =
+      world.coupling().active(CouplingArray::BoundaryForce) ? body_reaction_query(p) : TypeMask(0);
+  if (reaction_query != 0) reaction_list = world.request_neighbours(reaction_query, kLiquidMask);
+  body_wall_reactions = wall_pressure && in_mask(reaction_query, ParticleType::Frozen);
+  if (body_wall_reactions) {
+    p.declare_scratch_scalar(kBodyWallFactorField);
+    p.declare_scratch_scalar(kBodyWallFloorField);
+  }
   table.load(world, materials);
   if (surface_tension()) surface_normal_field = p.declare_scratch_vector(kSurfaceNormalField);
   owned.set_materials(world.materials().size(), materials);
@@ -61,6 +68,11 @@ FluidView FluidSolverState::begin_step(World& world) {
   wall_velocity = wall_list >= 0 ? world.particles()[wall_velocity_field].data() : nullptr;
   f.wall_velocity = wall_velocity;
   f.slip_normal = slip_normal(world);
+  if (body_wall_reactions) {
+    f.body_wall_factor = world.particles().scalar_field(kBodyWallFactorField).data();
+    f.body_wall_floor = world.particles().scalar_field(kBodyWallFloorField).data();
+    f.body = world.particles().body.data();
+  }
   if (implicit_viscosity()) {
     Particles& p = world.particles();
     viscosity_arrays =
@@ -78,8 +90,7 @@ void FluidSolverState::initial_density(World& world) {
                                                 boundary_gradient.data(), density});
 }
 
-void FluidSolverState::shared_forces(const World& world, const FluidView& f, Real* density,
-                                     Real dt) {
+void FluidSolverState::shared_forces(World& world, const FluidView& f, Real* density, Real dt) {
   const Vec3* liquid_force = world.coupling().active(CouplingArray::LiquidForce)
                                  ? world.coupling()[CouplingArray::LiquidForce].data()
                                  : nullptr;
@@ -96,7 +107,10 @@ void FluidSolverState::shared_forces(const World& world, const FluidView& f, Rea
       {fluid_gradient.data(), boundary_gradient.data(), other_acceleration.data(), density,
        liquid_force, pressure, surface_normal,
        wall_list >= 0 ? view_of(world.neighbours(wall_list)) : NeighbourView{}, wall_velocity,
-       world.particles().size()},
+       world.particles().size(),
+       reaction_list >= 0 ? view_of(world.neighbours(reaction_list)) : NeighbourView{},
+       reaction_list >= 0 ? world.coupling()[CouplingArray::BoundaryForce].data() : nullptr,
+       owned.materials()},
       world.settings().gravity, viscous);
 }
 

@@ -34,7 +34,13 @@ struct FluidSolverState {
   // put into every FluidView.
   bool wall_pressure = false;
   FluidNeighbourHandles lists;
-  int reaction_list = -1;  // rigid -> liquid, when a body system collects reactions
+  // Body particles -> liquid, when a body system collects reactions: rigid particles, and the
+  // frozen ones of static and kinematic bodies where there are any (reaction_query).
+  int reaction_list = -1;
+  TypeMask reaction_query = 0;
+  // With the wall pressure and frozen body particles: the fields of FluidView::body_wall_factor
+  // and body_wall_floor (boundary_reactions.h).
+  bool body_wall_reactions = false;
   // With wall friction (a boundary_viscosity > 0): boundary -> liquid, for the walls' velocities
   // in the viscous sums (wall_velocity.h), and their field.
   int wall_list = -1;
@@ -84,10 +90,11 @@ struct FluidSolverState {
   // state's (Solver::initialize_fields), which frame 0 shows.
   void initial_density(World& world);
   // Writes density (field `density`), the kernel gradients and other_acceleration.
-  // With f.wall_pressure, also the hydrostatic part of the wall pressure (boundary_pressure.h).
+  // With f.wall_pressure, also the hydrostatic part of the wall pressure (boundary_pressure.h),
+  // and its reactions on static and kinematic bodies (boundary_reactions.h).
   // With implicit viscosity, solves it for a step of dt (run_non_pressure_stages throws
   // ConvergenceError when the solve does not reach its tolerance within its cap).
-  void shared_forces(const World& world, const FluidView& f, Real* density, Real dt);
+  void shared_forces(World& world, const FluidView& f, Real* density, Real dt);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array
   // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor` is P_i of
   // boundary_reactions.h (a value struct, fluid_stages.h); `pressure_gradient` the gradient of the

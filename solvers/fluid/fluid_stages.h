@@ -5,6 +5,7 @@
 
 #include "framework/core/errors.h"
 #include "solvers/fluid/boundary_pressure.h"
+#include "solvers/fluid/boundary_reactions.h"
 #include "solvers/fluid/fluid_forces.h"
 #include "solvers/fluid/fluid_view.h"
 #include "solvers/fluid/implicit_viscosity.h"
@@ -126,6 +127,12 @@ struct NonPressureArrays {
   NeighbourView liquid_of_boundary{};
   Vec3* wall_velocity = nullptr;
   std::size_t all = 0;
+  // With f.body_wall_floor (the wall pressure beside static or kinematic bodies): the reaction
+  // lists (body particles -> liquid), the reactions' array and the solver's materials; the
+  // hydrostatic part's reactions are added here (boundary_reactions.h).
+  NeighbourView liquid_of_body{};
+  Vec3* boundary_force = nullptr;
+  OwnedMaterials owns{};
 };
 
 template <class Executor>
@@ -141,6 +148,9 @@ ImplicitViscosityStats run_non_pressure_stages(const Executor& exec, ParticleRan
                                            a.other_acceleration});
   if (a.liquid_force)
     exec.run(owned, AddForceOverMassStage{a.liquid_force, f.mass, a.other_acceleration});
+  if (f.body_wall_floor && a.boundary_force)
+    run_body_wall_hydrostatic_reactions(exec, a.all, f, a.liquid_of_body, a.owns, a.pressure,
+                                        gravity, a.boundary_force);
   if (!viscous.arrays) return {};
   const ImplicitViscosityStats stats = solve_implicit_viscosity(
       exec, owned, viscous.all, f, viscous.owns, a.density, a.fluid_gradient, a.other_acceleration,

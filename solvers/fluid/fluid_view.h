@@ -46,6 +46,14 @@ struct FluidView {
   // With free-slip boundaries (a frozen or rigid material's free_slip): every particle's wall
   // normal, zero where no-slip (framework/boundary/slip_normal.h). Null: all no-slip.
   const Vec3* slip_normal = nullptr;
+  // With the wall pressure and static or kinematic bodies (whose frozen particles take reactions;
+  // boundary_reactions.h): per particle, arrays the reaction stages fill for the owned liquid, the
+  // frozen neighbours' mirrored factor P_b at the reactions and the Shepard pressure pbar_i at the
+  // step's start (boundary_pressure.h), and the particles' body ids, to find the liquid beside
+  // such bodies. Null: no such bodies.
+  Real* body_wall_factor = nullptr;
+  Real* body_wall_floor = nullptr;
+  const BodyId* body = nullptr;
 };
 
 // The kernel gradients grad W_ij of a step's fluid pairs, by fluid-list slot k of particle i:

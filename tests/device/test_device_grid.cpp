@@ -38,7 +38,9 @@ Particles cloud(std::uint32_t seed) {
   for (int i = -2; i < 32; ++i)
     for (int k = -2; k < 17; ++k)
       for (int l = 0; l < 2; ++l)
-        p.add({Real(i) * s, Real(0.03) - Real(l) * s, Real(k) * s}, {}, 1, ParticleType::Frozen, 1);
+        // A corner of the wall is a static body's (the reactions' body-only queries).
+        p.add({Real(i) * s, Real(0.03) - Real(l) * s, Real(k) * s}, {}, 1, ParticleType::Frozen, 1,
+              i < 6 && k < 6 ? BodyId(0) : kNoBody);
   for (int g = 0; g < 200; ++g)
     p.add({Real(0.3) + jitter(rng) * 20, Real(0.5) + jitter(rng) * 20, Real(0.1) + jitter(rng)}, {},
           1, ParticleType::Granular, 2);
@@ -60,10 +62,12 @@ struct DeviceCloud {
   DeviceVector<Vec3> x;
   DeviceVector<std::uint32_t> id;
   DeviceVector<ParticleType> type;
+  DeviceVector<BodyId> body;
   explicit DeviceCloud(const Particles& p)
       : x(p.position.begin(), p.position.end()),
         id(p.id.begin(), p.id.end()),
-        type(p.type.begin(), p.type.end()) {}
+        type(p.type.begin(), p.type.end()),
+        body(p.body.begin(), p.body.end()) {}
 };
 
 void expect_same_lists(const Particles& p, TypeMask query, std::vector<TypeMask> targets,
@@ -86,8 +90,8 @@ void expect_same_lists(const Particles& p, TypeMask query, std::vector<TypeMask>
   std::vector<device::DeviceNeighbourList<Backend>> dev(targets.size());
   std::vector<device::DeviceNeighbourList<Backend>*> dev_outs;
   for (auto& l : dev) dev_outs.push_back(&l);
-  dgrid.find_neighbours(device::raw<ParticleType>(d.type), query, targets.data(),
-                        int(targets.size()), radius, dev_outs.data());
+  dgrid.find_neighbours(device::raw<ParticleType>(d.type), device::raw<BodyId>(d.body), query,
+                        targets.data(), int(targets.size()), radius, dev_outs.data());
   std::size_t total = 0;
   for (std::size_t l = 0; l < targets.size(); ++l) {
     SCOPED_TRACE("list " + std::to_string(l));
@@ -108,6 +112,7 @@ TEST(DeviceGrid, ListsEqualTheCpuGridsForAnyThreadCount) {
     expect_same_lists(p, kAllTypes, {kAllTypes}, Real(0.05), threads);
     expect_same_lists(p, mask_of(ParticleType::Granular),
                       {mask_of(ParticleType::Granular), kLiquidMask}, Real(0.031), threads);
+    expect_same_lists(p, kBoundaryMask | kOfBodiesOnly, {kLiquidMask}, Real(0.05), threads);
   }
 }
 

@@ -260,6 +260,15 @@ TEST(SplitWorld, FreeSlipWallsAndBodiesAreBitwiseTheOneRankRun) {
   expect_same_as_one_rank(doc, 100);
 }
 
+// Frozen bodies' reactions (solvers/fluid/boundary_reactions.h): a fixed block and a paddle
+// turning across the cuts, with the wall pressure, whose per-particle factors the ranks take from
+// their ghosts' owners.
+TEST(SplitWorld, FixedAndTurningObstaclesAreBitwiseTheOneRankRun) {
+  auto doc = small_dam_break();
+  testing::add_fixed_block_and_paddle(doc);
+  expect_same_as_one_rank(doc, 130);  // the surge reaches the paddle at about step 110
+}
+
 // Grains: pairs across a domain face are computed on both ranks, and the springs follow the
 // grains that migrate (dem_contact_list.h). The sample scene, coarser, with a smaller block of
 // sand just above the water, across the domains' cuts: grains in air, grains in water (drag and

@@ -54,7 +54,9 @@ inline nlohmann::json cube_shot_into_water(const nlohmann::json& solver) {
        {{{"name", "cube"},
          {"material", "solid"},
          {"mesh",
-          {{"file", kTestMeshes + "unit_box.obj"}, {"scale", 0.12}, {"position", {0.28, 0.3, 0.3}}}},
+          {{"file", kTestMeshes + "unit_box.obj"},
+           {"scale", 0.12},
+           {"position", {0.28, 0.3, 0.3}}}},
          {"velocity", {0.5, 0, 0}}}}},
       {"time", {{"fixed_dt", 0.0004}}},
   };
@@ -94,6 +96,25 @@ inline nlohmann::json grain_in_water(const nlohmann::json& solver, double grain_
              {"max", {0.15 + radius, y + radius, 0.15 + radius}},
              {"velocity", velocity}}}},
           {"time", {{"dt_max", 0.002}}}};
+}
+
+// Two bodies of a frozen material added to the dam break (samples/dam_break.json), each reporting
+// the fluid's force on it (solvers/fluid/boundary_reactions.h): a block on the floor in the
+// surge's path and a paddle turning at 3 rad/s further on. The water's solver gets the wall
+// pressure, which frozen body particles carry and take back.
+inline void add_fixed_block_and_paddle(nlohmann::json& doc) {
+  doc["materials"]["steel"] = {{"type", "frozen"}};
+  doc["materials"]["water"]["solver"]["wall_pressure"] = 1;
+  auto box = [](const char* name, std::vector<double> scale, std::vector<double> position) {
+    return nlohmann::json{
+        {"name", name},
+        {"material", "steel"},
+        {"mesh",
+         {{"file", kTestMeshes + "unit_box.obj"}, {"scale", scale}, {"position", position}}}};
+  };
+  doc["bodies"] = {box("block", {0.12, 0.16, 0.16}, {0.8, 0.08, 0.2}),
+                   box("paddle", {0.24, 0.06, 0.24}, {1.05, 0.18, 0.2})};
+  doc["bodies"][1]["motion"] = {{"angular_velocity", {0, 0, 3.0}}};
 }
 
 inline const RigidBodySystem& bodies_of(const World& world) {

@@ -157,23 +157,22 @@ TEST(Emitters, ATankFedByAHoseFillsAtQOverItsArea) {
 // examples 3.9 and 3.10, and the inclined plate of problem P3.50): a steady jet of area A and
 // speed V spreads along a frictionless plate whose normal makes an angle alpha with the jet, and
 // only the normal momentum is taken from it: the plate is pushed along its normal with
-// F = rho Q V cos(alpha) whatever the split of the sheet (rho A (V - u)^2 cos(alpha) for a plate
-// drifting at u along the jet). (The rho Q V (1 - cos theta) is a vane turning the whole
-// jet through theta; a flat plate splits the sheet, and its normal force is the test.) Without
-// gravity the jet keeps its speed, and sinks take the sheet away once it leaves the plate, so
-// nothing comes back. The plate is a heavy free body (steel a dozen times over: it drifts at
-// under 2 % of the jet's speed), whose fluid force is the reaction of the Akinci boundary forces
-// and the wall viscosity. The plate is a free-slip wall (its material's free_slip, with the
-// water's own viscosity as boundary_viscosity): the frictionless plate of the reference, whose
-// wall viscosity damps the sheet's motion into and off it and its jitter, not its sliding. Measured
-// over 0.4-0.7 s: 0.987 (normal) and 0.989 (tilted) at 2 cm, 1.004 and 0.994 at 1.25 cm. With walls
-// that only push (no wall viscosity) the sheet's jitter normal to the plate is rectified: it leaves
-// the plate moving back towards the jet and the force reads 1.05 (2 cm and 1.25 cm;
+// F = rho Q V cos(alpha) whatever the split of the sheet. (The rho Q V (1 - cos theta) is a
+// vane turning the whole jet through theta; a flat plate splits the sheet, and its normal force is
+// the test.) Without gravity the jet keeps its speed, and sinks take the sheet away once it leaves
+// the plate, so nothing comes back. The plate is fixed: a body of a frozen material, whose fluid
+// force is the reaction of the Akinci boundary forces and the wall viscosity on its particles
+// (solvers/fluid/boundary_reactions.h). It is a free-slip wall (its material's free_slip, with
+// the water's own viscosity as boundary_viscosity): the frictionless plate of the reference, whose
+// wall viscosity damps the sheet's motion into and off it and its jitter, not its sliding.
+// Measured over 0.4-0.7 s: 0.986 (normal) and 0.990 (tilted) at 2 cm; on a heavy free plate
+// (drifting at under 2 % of the jet's speed) 0.987 and 0.989, and 1.004 and 0.994 at 1.25 cm. With
+// walls that only push (no wall viscosity) the sheet's jitter normal to the plate is rectified: it
+// leaves the plate moving back towards the jet and the force reads 1.05 (2 cm and 1.25 cm;
 // docs/emitters.md).
 struct JetOnPlate {
   double ratio = 0;       // the normal force's mean over the reference's
   double off_normal = 0;  // the mean force's part along the plate, over the reference
-  double drift = 0;       // the plate's largest speed over the jet's
 };
 
 JetOnPlate jet_on_a_plate(double tilt_degrees) {
@@ -190,7 +189,7 @@ JetOnPlate jet_on_a_plate(double tilt_degrees) {
           {"viscosity", 0.001},
           {"boundary_viscosity", 0.001}}},
         {"walls", {{"type", "frozen"}}},
-        {"heavy", {{"type", "rigid"}, {"density", 1e5}, {"free_slip", 1}}}}},
+        {"plate", {{"type", "frozen"}, {"free_slip", 1}}}}},
       {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {0.8, 0.6, 0.6}}}}},
       {"emitters",
        {{{"material", "water"},
@@ -200,7 +199,7 @@ JetOnPlate jet_on_a_plate(double tilt_degrees) {
          {"speed", speed}}}},
       {"bodies",
        {{{"name", "plate"},
-         {"material", "heavy"},
+         {"material", "plate"},
          {"mesh",
           {{"file", std::string(UPF_SOURCE_DIR) + "/assets/meshes/unit_box.obj"},
            {"scale", {0.1, 0.36, 0.36}},
@@ -226,9 +225,7 @@ JetOnPlate jet_on_a_plate(double tilt_degrees) {
     const double dt = t.world->last_step().dt;
     const BodyState plate = t.world->body_systems().front()->body_states().front().state;
     impulse += dt * plate.fluid_force;
-    const double relative = speed - plate.velocity.x();
-    expected_impulse += dt * 1000 * area * relative * relative * std::cos(alpha);
-    r.drift = std::max(r.drift, plate.velocity.norm() / speed);
+    expected_impulse += dt * 1000 * area * speed * speed * std::cos(alpha);
   }
   r.ratio = impulse.dot(normal) / expected_impulse;
   r.off_normal = (impulse - impulse.dot(normal) * normal).norm() / expected_impulse;
@@ -239,10 +236,9 @@ JetOnPlate jet_on_a_plate(double tilt_degrees) {
 
 TEST(Emitters, AJetOnAPlatePushesItWithRhoQV) {
   const JetOnPlate r = jet_on_a_plate(0);
-  record_validation("jet force on a normal plate / rho A (V - u)^2, mean over 0.4-0.7 s",
+  record_validation("jet force on a fixed normal plate / rho Q V, mean over 0.4-0.7 s",
                     "momentum balance, F = rho Q V (White, Fluid Mechanics, ex. 3.9, 3.10)", "1",
                     "within 5 %", r.ratio);
-  EXPECT_LT(r.drift, 0.02);
   EXPECT_NEAR(r.ratio, 1.0, 0.05);
   EXPECT_LT(r.off_normal, 0.05);
 }
@@ -250,10 +246,9 @@ TEST(Emitters, AJetOnAPlatePushesItWithRhoQV) {
 TEST(Emitters, AJetOnATiltedPlatePushesItAlongItsNormalWithRhoQVCosAlpha) {
   const JetOnPlate r = jet_on_a_plate(30);
   record_validation(
-      "jet force on a plate tilted 30 degrees, along its normal / rho Q V cos(alpha)",
+      "jet force on a fixed plate tilted 30 degrees, along its normal / rho Q V cos(alpha)",
       "momentum balance normal to a frictionless plate (White, Fluid Mechanics, P3.50)", "1",
       "within 5 %", r.ratio);
-  EXPECT_LT(r.drift, 0.02);
   EXPECT_NEAR(r.ratio, 1.0, 0.05);
   EXPECT_LT(r.off_normal, 0.05) << "a frictionless plate is pushed along its normal";
 }

@@ -503,6 +503,31 @@ TEST(NeighbourGridReference, SeveralTargetListsInOneScan) {
                                kCellSize);
 }
 
+// A query with kOfBodiesOnly lists the neighbours of the body particles among its types, each
+// exactly as the plain query does, and nothing for the others (a static body's reactions need the
+// liquid around its particles, not around every wall particle).
+TEST(NeighbourGridReference, BodyOnlyQueriesListTheBodyParticlesAlone) {
+  const Particles& full = clustered_case().particles;
+  Particles p;
+  std::size_t bodies = 0;
+  for (std::size_t i = 0; i < full.size(); ++i) {
+    const bool of_a_body = full.type[i] == ParticleType::Frozen && i % 3 == 0;
+    bodies += of_a_body;
+    p.add(full.position[i], Vec3{}, 1, full.type[i], 0, of_a_body ? BodyId(0) : kNoBody);
+  }
+  ASSERT_GT(bodies, 100u);
+  const NeighbourList plain = find(p, kBoundaryMask, kLiquidMask, kCellSize);
+  const NeighbourList only = find(p, kBoundaryMask | kOfBodiesOnly, kLiquidMask, kCellSize);
+  std::size_t listed = 0;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    const auto want = p.body[i] != kNoBody ? plain.of(i) : decltype(plain.of(i)){};
+    const auto got = only.of(i);
+    ASSERT_TRUE(std::equal(got.begin(), got.end(), want.begin(), want.end())) << "particle " << i;
+    listed += got.size();
+  }
+  EXPECT_GT(listed, 100u) << "the body particles have liquid neighbours: the case tests something";
+}
+
 // --- Order and thread count --------------------------------------------------------------------
 
 // The lists as stable ids, in id order of the query particle, each in its listed order.
