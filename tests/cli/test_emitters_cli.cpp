@@ -38,6 +38,17 @@ std::vector<std::string> csv_column(const std::string& text, const std::string& 
   return cells;
 }
 
+// Every frame file of run `a` is byte for byte run `b`'s; returns how many were compared.
+int expect_same_frames(const fs::path& a, const fs::path& b) {
+  int frames = 0;
+  for (const auto& e : fs::directory_iterator(a / "frames")) {
+    EXPECT_EQ(contents(e.path()), contents(b / "frames" / e.path().filename()))
+        << e.path().filename();
+    ++frames;
+  }
+  return frames;
+}
+
 class EmittersCli : public Cli {
  protected:
   // A small tank with a round tap above an empty floor.
@@ -154,13 +165,7 @@ TEST_F(EmittersCli, AResumedPourWritesTheBytesOfOneNeverStopped) {
       0);
   const Result resumed = run_upf("run --resume " + parts.string() + " --end 0.4 -q");
   ASSERT_EQ(resumed.code, 0) << resumed.output;
-  int frames = 0;
-  for (const auto& e : fs::directory_iterator(whole / "frames")) {
-    EXPECT_EQ(contents(e.path()), contents(parts / "frames" / e.path().filename()))
-        << e.path().filename();
-    ++frames;
-  }
-  EXPECT_GE(frames, 9);
+  EXPECT_GE(expect_same_frames(whole, parts), 9);
   EXPECT_EQ(contents(whole / "metrics.csv").substr(0, 200),
             contents(parts / "metrics.csv").substr(0, 200));
   EXPECT_NE(contents(whole / "metrics.csv").find("mass_in_kg,mass_out_kg"), std::string::npos);
@@ -184,13 +189,7 @@ TEST_F(EmittersCli, APourKilledMidWayResumesToTheBytesOfOneNeverStopped) {
   ASSERT_FALSE(fs::exists(killed / "summary.json")) << "killed mid-way, not finished";
   const Result resumed = run_upf("run --resume " + killed.string() + " -q -j1");
   ASSERT_EQ(resumed.code, 0) << resumed.output;
-  int frames = 0;
-  for (const auto& e : fs::directory_iterator(whole / "frames")) {
-    EXPECT_EQ(contents(e.path()), contents(killed / "frames" / e.path().filename()))
-        << e.path().filename();
-    ++frames;
-  }
-  EXPECT_GE(frames, 30);
+  EXPECT_GE(expect_same_frames(whole, killed), 30);
   EXPECT_EQ(contents(whole / "particles.pvd"), contents(killed / "particles.pvd"));
   // metrics.csv's timings differ from run to run; its steps, times and masses do not.
   for (const char* name : {"t", "dt", "n_liquid", "mass_in_kg", "mass_out_kg"})
