@@ -1,8 +1,8 @@
 // A fluid solver's step in a device pipeline (solver_part.h), for any backend and any pressure
 // method (pcisph_method.h, wcsph_method.h, ...): FluidSolverState's shared stages around the
-// method's own, on device arrays. Its lists: liquid -> liquid and liquid -> boundary, and rigid
-// -> liquid when a body system takes the reactions. Stages "non_pressure" (shared forces, the
-// grains' reactions from liquid_force, then the method's own), optionally "divergence",
+// method's own, on device arrays. Its lists: liquid -> liquid and liquid -> boundary, and body
+// particles -> liquid when a body system takes the reactions. Stages "non_pressure" (shared forces,
+// the grains' reactions from liquid_force, then the method's own), optionally "divergence",
 // "pressure" (the method's) and "integration" (reactions on bodies, then symplectic Euler), timed
 // like the CPU's. Every stage is the struct the CPU solver runs, so the bits are the CPU's.
 #pragma once

@@ -39,7 +39,7 @@ namespace upf {
 inline constexpr const char* kBodyWallFactorField = "fluid.body_wall_factor";
 inline constexpr const char* kBodyWallFloorField = "fluid.body_wall_floor";
 
-// The reaction on rigid particle b, gathered over `fluid_of_boundary` (for each rigid particle,
+// The reaction on body particle b, gathered over `fluid_of_boundary` (for each body particle,
 // its liquid neighbours); only those of an owned material count (the solver's own particles).
 // `pressure_factor(i)` is P_i (fluid_stages.h); `pressure_gradient(r)` is the kernel gradient the
 // solver's pressure term uses. Adds to force[b].
@@ -168,7 +168,7 @@ struct CubicSplineGradient {
   UPF_HD Vec3 operator()(const Vec3& r) const { return kernel.gradient(r); }
 };
 
-// The stage over all n particles (only rigid ones have entries in `fluid_of_boundary`), on any
+// The stage over all n particles (only body particles have entries in `fluid_of_boundary`), on any
 // executor: the CPU's (FluidSolverState::add_reactions) or a device pipeline's.
 template <class Executor, class PressureFactor, class PressureGradient>
 void run_boundary_reactions(const Executor& exec, std::size_t n, const FluidView& f,

@@ -5,7 +5,7 @@
 //                    a_other = g + viscosity (fluid_forces.h) + surface tension and adhesion
 //                    (surface_forces.h, when a liquid has a sigma) + the force of other materials
 //                    (CouplingArray::LiquidForce: grains' drag and buoyancy reactions) / m;
-//   add_reactions    the reactions on rigid boundary particles (boundary_reactions.h), at the
+//   add_reactions    the reactions on body particles (boundary_reactions.h), at the
 //                    positions and velocities the forces used, so before integrate;
 //   integrate        symplectic Euler, v += (a_other + a_pressure) dt, then x += v dt.
 // The pressure stage between shared_forces and integrate is each solver's own.
@@ -96,7 +96,7 @@ struct FluidSolverState {
   // ConvergenceError when the solve does not reach its tolerance within its cap).
   void shared_forces(World& world, const FluidView& f, Real* density, Real dt);
   // Adds the reactions of the owned particles' boundary forces to the world's coupling array
-  // CouplingArray::BoundaryForce, when the world has rigid particles. `pressure_factor` is P_i of
+  // CouplingArray::BoundaryForce, when the world has body particles. `pressure_factor` is P_i of
   // boundary_reactions.h (a value struct, fluid_stages.h); `pressure_gradient` the gradient of the
   // solver's pressure term.
   template <class PressureFactor, class PressureGradient = CubicSplineGradient>
