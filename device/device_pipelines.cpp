@@ -68,9 +68,7 @@ void check_covered(const World& world, const std::string& where) {
   setup.owns.resize(world.materials().size());
   for (std::size_t m = 0; m < setup.owns.size(); ++m)
     setup.owns[m] = fluid.owned.owns(MaterialId(m)) ? 1 : 0;
-  setup.reactions = fluid.reaction_list >= 0;
   setup.reaction_query = fluid.reaction_query;
-  setup.body_wall_reactions = fluid.body_wall_reactions;
   setup.wall_friction = fluid.wall_list >= 0;
   setup.wall_pressure = fluid.wall_pressure;
   setup.density_contrast = fluid.table.density_contrast;

@@ -51,7 +51,8 @@ class FluidPart final : public SolverPart<Backend> {
     fluid_list_ = state.lists.request(kLiquidMask, kLiquidMask);
     boundary_list_ = state.lists.request(kLiquidMask, kBoundaryMask);
     if (setup_.wall_friction) wall_list_ = state.lists.request(kBoundaryMask, kLiquidMask);
-    if (setup_.reactions) reaction_list_ = state.lists.request(setup_.reaction_query, kLiquidMask);
+    if (setup_.reaction_query != 0)
+      reaction_list_ = state.lists.request(setup_.reaction_query, kLiquidMask);
   }
 
   void bind(PipelineState<Backend>& state) override {
@@ -99,7 +100,7 @@ class FluidPart final : public SolverPart<Backend> {
       boundary_gradient_.resize(n);
       other_acceleration_.resize(n);
       step.f = fluid_view(state);
-      if (setup_.body_wall_reactions) {
+      if (body_wall_reactions(setup_.wall_pressure, setup_.reaction_query)) {
         step.f.body_wall_factor = raw<Real>(state.particles.scalar_array(kBodyWallFactorField));
         step.f.body_wall_floor = raw<Real>(state.particles.scalar_array(kBodyWallFloorField));
         step.f.body = raw<BodyId>(state.particles.body);

@@ -32,10 +32,10 @@ struct FluidSetup {
   // found by name, implicit_viscosity.h).
   bool implicit_viscosity = false;
   ImplicitViscositySettings viscosity_solve{};
-  bool wall_friction = false;        // FluidSolverState::wall_list: walls' velocities extrapolated
-  bool reactions = false;            // body particles whose reactions a body system sums
-  TypeMask reaction_query = 0;       // FluidSolverState::reaction_query
-  bool body_wall_reactions = false;  // FluidSolverState::body_wall_reactions
+  bool wall_friction = false;  // FluidSolverState::wall_list: walls' velocities extrapolated
+  // FluidSolverState::reaction_query: the body particles whose reactions a body system sums; 0:
+  // none.
+  TypeMask reaction_query = 0;
   // Keep grad W_ij per fluid pair (12 B a pair, as the CPU path does) instead of recomputing it
   // where used: the same bits either way (FluidGradients).
   bool store_gradients = false;

@@ -35,7 +35,14 @@
 
 namespace upf {
 
-// The per-particle scratch fields of FluidView::body_wall_factor and body_wall_floor.
+// Whether frozen body particles take the wall pressure's reactions: with the wall pressure, where
+// the reaction lists (`reaction_query`, body_reaction_query) hold frozen body particles.
+inline bool body_wall_reactions(bool wall_pressure, TypeMask reaction_query) {
+  return wall_pressure && in_mask(reaction_query, ParticleType::Frozen);
+}
+
+// The per-particle scratch fields of FluidView::body_wall_factor and body_wall_floor, declared
+// where body_wall_reactions holds.
 inline constexpr const char* kBodyWallFactorField = "fluid.body_wall_factor";
 inline constexpr const char* kBodyWallFloorField = "fluid.body_wall_floor";
 

@@ -29,8 +29,7 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   reaction_query =
       world.coupling().active(CouplingArray::BoundaryForce) ? body_reaction_query(p) : TypeMask(0);
   if (reaction_query != 0) reaction_list = world.request_neighbours(reaction_query, kLiquidMask);
-  body_wall_reactions = wall_pressure && in_mask(reaction_query, ParticleType::Frozen);
-  if (body_wall_reactions) {
+  if (body_wall_reactions(wall_pressure, reaction_query)) {
     p.declare_scratch_scalar(kBodyWallFactorField);
     p.declare_scratch_scalar(kBodyWallFloorField);
   }
@@ -68,7 +67,7 @@ FluidView FluidSolverState::begin_step(World& world) {
   wall_velocity = wall_list >= 0 ? world.particles()[wall_velocity_field].data() : nullptr;
   f.wall_velocity = wall_velocity;
   f.slip_normal = slip_normal(world);
-  if (body_wall_reactions) {
+  if (body_wall_reactions(wall_pressure, reaction_query)) {
     f.body_wall_factor = world.particles().scalar_field(kBodyWallFactorField).data();
     f.body_wall_floor = world.particles().scalar_field(kBodyWallFloorField).data();
     f.body = world.particles().body.data();

@@ -38,9 +38,6 @@ struct FluidSolverState {
   // frozen ones of static and kinematic bodies where there are any (reaction_query).
   int reaction_list = -1;
   TypeMask reaction_query = 0;
-  // With the wall pressure and frozen body particles: the fields of FluidView::body_wall_factor
-  // and body_wall_floor (boundary_reactions.h).
-  bool body_wall_reactions = false;
   // With wall friction (a boundary_viscosity > 0): boundary -> liquid, for the walls' velocities
   // in the viscous sums (wall_velocity.h), and their field.
   int wall_list = -1;
