@@ -94,6 +94,7 @@ int run_command(const RunArgs& args) {
   RunOptions options;
   options.out_dir = out_dir;
   options.threads = args.threads;
+  options.follow_free_cores = !args.fixed_threads;
   options.end_time = run.end_time;
   options.write_frames = !run.no_frames;
   if (!run.checkpoint_every.empty())
@@ -286,6 +287,7 @@ CompareOptions split_options(const ComparePlanFile& plan, const CompareArgs& arg
   options.out_dir = args.out_dir;
   options.vdb_writers = vdb_frame_writers();
   options.threads = args.threads > 0 ? args.threads : plan.threads;
+  options.follow_free_cores = !args.fixed_threads;
   options.end_time = plan.end_time;
   options.write_frames = plan.write_frames;
   return options;
@@ -406,6 +408,7 @@ int compare_command(const CompareArgs& args) {
   options.out_dir = args.out_dir;
   options.vdb_writers = vdb_frame_writers();
   options.threads = args.threads;
+  options.follow_free_cores = !args.fixed_threads;
   options.end_time = args.end_time;
   options.write_frames = !args.no_frames;
   // A fresh progress line per run: each run's clock starts at zero.

@@ -13,6 +13,7 @@ struct RunArgs {
   std::string scene;
   std::string out_dir;
   int threads = 0;
+  bool fixed_threads = false;  // every thread even while the machine is busy
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;
@@ -39,6 +40,7 @@ struct CompareArgs {
   bool solvers_given = false;  // false: every registered solver the scene has particles for
   std::string out_dir = "out/compare";
   int threads = 0;
+  bool fixed_threads = false;  // every thread even while the machine is busy
   std::optional<double> end_time;
   bool quiet = false;
   bool no_frames = false;

@@ -33,10 +33,13 @@
 
 namespace {
 // The options `run` and `compare` share, with the same meaning.
-void add_run_controls(CLI::App& command, int& threads, std::optional<double>& end_time, bool& quiet,
-                      bool& no_frames) {
+void add_run_controls(CLI::App& command, int& threads, bool& fixed_threads,
+                      std::optional<double>& end_time, bool& quiet, bool& no_frames) {
   command.add_option("--threads,-j", threads, "CPU threads (default: all)")
       ->check(CLI::Range(1, upf::app::kMaxThreads));
+  command.add_flag("--fixed-threads", fixed_threads,
+                   "keep every thread while other processes take cores (by default a run uses "
+                   "one thread per free core; the results are the same bits either way)");
   command.add_option("--end", end_time, "end time in seconds, overriding the scene's")
       ->check(upf::app::end_time_check());
   command.add_flag("--quiet,-q", quiet, "no progress output");
@@ -76,7 +79,8 @@ Exit codes: 0 ok, 1 output failure, 2 bad input, 3 unstable (last good frame wri
   auto* out_option =
       run->add_option("--out,-o", run_args.out_dir, "output directory (default out/<scene name>)")
           ->check(upf::app::non_empty_dir_check());
-  add_run_controls(*run, run_args.threads, run_args.end_time, run_args.quiet, run_args.no_frames);
+  add_run_controls(*run, run_args.threads, run_args.fixed_threads, run_args.end_time,
+                   run_args.quiet, run_args.no_frames);
   auto* overwrite_option = run->add_flag(
       "--overwrite", run_args.overwrite,
       "write into a non-empty directory that no upf run recorded (no upf_manifest.txt): the "
@@ -162,8 +166,8 @@ Exit codes: 0 ok (an unstable solver gets its row), 1 plots missing, 2 bad input
           ->delimiter(',');
   compare->add_option("--out,-o", compare_args.out_dir, "output directory (default out/compare)")
       ->check(upf::app::non_empty_dir_check());
-  add_run_controls(*compare, compare_args.threads, compare_args.end_time, compare_args.quiet,
-                   compare_args.no_frames);
+  add_run_controls(*compare, compare_args.threads, compare_args.fixed_threads,
+                   compare_args.end_time, compare_args.quiet, compare_args.no_frames);
   compare->add_option("--plot-script", compare_args.plot_script,
                       "the plotting script (default: $UPF_PLOT_SCRIPT, else "
                       "scripts/plot_compare.py of the source tree)");

@@ -43,13 +43,14 @@ void ProgressReporter::update(const RunProgress& p) {
     const int filled = int(fraction * kWidth);
     std::string bar(std::size_t(filled), '#');
     bar.resize(kWidth, '-');
-    std::fprintf(stream_, "\r[%s] t = %s / %s s  %6.1f steps/s  ETA %5s s ", bar.c_str(),
+    std::fprintf(stream_, "\r[%s] t = %s / %s s  %6.1f steps/s  ETA %5s s  %d %s ", bar.c_str(),
                  sim_time(p.time).c_str(), sim_time(p.end_time).c_str(), steps_per_s,
-                 seconds(eta).c_str());
+                 seconds(eta).c_str(), p.threads, p.threads == 1 ? "thread " : "threads");
   } else {
-    std::fprintf(stream_, "t = %s / %s s (%3.0f%%), %llu steps, %.1f steps/s, ETA %s s\n",
+    std::fprintf(stream_, "t = %s / %s s (%3.0f%%), %llu steps, %.1f steps/s, ETA %s s, %d %s\n",
                  sim_time(p.time).c_str(), sim_time(p.end_time).c_str(), 100.0 * fraction,
-                 static_cast<unsigned long long>(p.steps), steps_per_s, seconds(eta).c_str());
+                 static_cast<unsigned long long>(p.steps), steps_per_s, seconds(eta).c_str(),
+                 p.threads, p.threads == 1 ? "thread" : "threads");
   }
   std::fflush(stream_);
   printed_ = true;

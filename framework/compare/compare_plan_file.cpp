@@ -109,6 +109,9 @@ CompareRow read_compare_row(const std::filesystem::path& out_dir, const PlannedR
                                         (out_dir / run.name).string());
   if (j.contains("failure") && j["failure"].is_string()) r.failure = j["failure"];
   r.threads = field<int>(j, "threads", path);
+  // Summaries of builds before it had no mean_threads: they kept every thread.
+  r.mean_threads =
+      j.contains("mean_threads") ? field<double>(j, "mean_threads", path) : double(r.threads);
   r.steps = field<std::uint64_t>(j, "steps", path);
   r.simulated_time = field<double>(j, "simulated_time_s", path);
   r.wall_seconds = field<double>(j, "wall_time_s", path);

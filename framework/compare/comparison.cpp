@@ -36,6 +36,7 @@ CompareRow run_compare_entry(const SolverRunPlan& entry, const Registry& registr
   RunOptions run;
   run.out_dir = options.out_dir / entry.name;
   run.threads = options.threads;
+  run.follow_free_cores = options.follow_free_cores;
   run.vdb_writers = options.vdb_writers;
   run.end_time = options.end_time;
   run.write_frames = options.write_frames;

@@ -48,8 +48,9 @@ struct Comparison {
 
 struct CompareOptions {
   std::filesystem::path out_dir = "out/compare";
-  VdbFrameWriters vdb_writers;   // for the "surface" and "vdb_points" formats (see RunOptions)
-  int threads = 0;               // the same for every run; 0: OpenMP's default
+  VdbFrameWriters vdb_writers;    // for the "surface" and "vdb_points" formats (see RunOptions)
+  int threads = 0;                // the same for every run; 0: OpenMP's default
+  bool follow_free_cores = true;  // RunOptions::follow_free_cores
   std::optional<double> end_time;
   bool write_frames = true;
   std::function<void(const SolverRunPlan&, std::size_t index, std::size_t count)> on_run_start;

@@ -15,6 +15,7 @@ nlohmann::json run_result_json(const RunResult& r) {
   j["status"] = r.status;
   if (!r.failure.empty()) j["failure"] = r.failure;
   j["threads"] = r.threads;
+  j["mean_threads"] = r.mean_threads;
   j["steps"] = r.steps;
   j["simulated_time_s"] = r.simulated_time;
   j["wall_time_s"] = r.wall_seconds;

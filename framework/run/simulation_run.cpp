@@ -19,6 +19,7 @@
 #include "framework/run/run_totals.h"
 #include "framework/run/solver_tables.h"
 #include "framework/run/surface_memory.h"
+#include "framework/run/thread_share_watch.h"
 #include "framework/scene/scene_builder.h"
 
 namespace upf {
@@ -429,6 +430,10 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
     world.restore_state(again);
   };
   CheckpointSchedule checkpoints(options.checkpoint, world.time());
+  // The device pipeline keeps the thread count it was made with.
+  const bool follows_cores = options.follow_free_cores && !world.device();
+  ThreadShareWatch free_cores(follows_cores ? world.executor().threads() : 1);
+  double thread_steps = 0;
   const int probe_every = scene.output.probe_every;
 
   try {
@@ -453,9 +458,13 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
         if (recorder) recorder->sample_probes(state, t);
       }
       if (options.on_step) options.on_step(world);
+      thread_steps += world.executor().threads();
+      result.mean_threads = thread_steps / double(world.step_count() - start_steps);
+      world.set_threads(free_cores.threads_after_step(world.executor().threads()));
       if (options.on_progress && records)
         options.on_progress({world.time(), end, world.step_count(), start_time,
-                             world.step_count() - start_steps, wall.elapsed_ms() / 1000.0});
+                             world.step_count() - start_steps, wall.elapsed_ms() / 1000.0,
+                             world.executor().threads()});
       if (at_end) break;
       if (agreed(options.stop_requested && options.stop_requested())) {
         write_checkpoint_now();

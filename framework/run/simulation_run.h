@@ -28,6 +28,8 @@ struct RunProgress {
   double start_time = 0;
   std::uint64_t steps_this_process = 0;
   double wall_seconds = 0;
+  // The CPU threads the steps use now: fewer than asked for while the machine is busy.
+  int threads = 0;
 };
 
 // When a run writes checkpoints (checkpoint_file.h) into its output directory.
@@ -48,7 +50,9 @@ struct OutputEstimate {
 
 struct RunOptions {
   std::filesystem::path out_dir = "out";
-  int threads = 0;                 // 0: OpenMP's default
+  int threads = 0;  // 0: OpenMP's default
+  // Fewer threads while other processes take cores (thread_share_watch.h); false keeps them all.
+  bool follow_free_cores = true;
   std::optional<double> end_time;  // overrides the scene's time.end
   bool write_frames = true;
   std::function<void(const RunProgress&)> on_progress;  // called after every step
@@ -96,6 +100,9 @@ struct RunResult {
   std::uint64_t steps = 0;
   double simulated_time = 0;  // unstable: the time the failed step reached
   int threads = 0;
+  // The threads this process's steps used, on average: fewer than `threads` while other
+  // processes took cores (RunOptions::follow_free_cores).
+  double mean_threads = 0;
   double wall_seconds = 0;
   std::size_t liquid_particles = 0;
   std::size_t total_particles = 0;

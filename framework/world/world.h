@@ -52,6 +52,9 @@ class World {
   const MaterialTable& materials() const { return materials_; }
   const WorldSettings& settings() const { return settings_; }
   const CpuExecutor& executor() const { return executor_; }
+  // Between steps; the results are the same bits for any count (cpu_executor.h). A device
+  // pipeline keeps the count it was made with.
+  void set_threads(int threads) { executor_.set_threads(threads); }
   CubicSplineKernel kernel() const { return CubicSplineKernel(settings_.support_radius()); }
 
   // `use`: the coupling arrays it writes and reads (its SolverInfo's declaration).

@@ -184,6 +184,23 @@ TEST_F(Cli, RunWritesOutputs) {
   const auto s = nlohmann::json::parse(summary);
   EXPECT_EQ(s["status"], "completed");
   EXPECT_NEAR(s["simulated_time_s"].get<double>(), 0.1, 1e-9);
+  // By default a run uses a thread per free core (thread_share_watch.h): between 1 and the 2
+  // asked for, however busy the machine. --fixed-threads keeps both, and the bits are the same.
+  EXPECT_GE(s["mean_threads"].get<double>(), 1.0);
+  EXPECT_LE(s["mean_threads"].get<double>(), 2.0);
+  const fs::path fixed = dir_ / "fixed";
+  const Result f =
+      run_upf("run " + write(doc) + " --out " + fixed.string() + " --threads 2 --fixed-threads -q");
+  ASSERT_EQ(f.code, 0) << f.output;
+  std::ifstream fixed_summary(fixed / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(fixed_summary)["mean_threads"].get<double>(), 2.0);
+  for (const char* file : {"probes.csv", "frames/frame_00003.vtp"}) {
+    std::ifstream a(out / file, std::ios::binary), b(fixed / file, std::ios::binary);
+    const std::string bytes_a{std::istreambuf_iterator<char>(a), {}};
+    const std::string bytes_b{std::istreambuf_iterator<char>(b), {}};
+    EXPECT_FALSE(bytes_a.empty()) << file;
+    EXPECT_EQ(bytes_a, bytes_b) << file;
+  }
 }
 
 // probes.csv gets a row at every step (an impact lasts a few steps, not a few frames), and at

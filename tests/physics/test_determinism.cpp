@@ -55,6 +55,13 @@ TEST(Determinism, OneAndTwoThreadsGiveBitwiseIdenticalPositions) {
   // The run must actually have moved: a frozen world would pass trivially.
   const auto start = run_steps(small_dam_break(), 1, 0);
   EXPECT_GT(testing::bitwise_differences(one, start, true), 1000u);
+  // A run on a busy machine changes its thread count between steps (thread_share_watch.h).
+  testing::TestWorld changing(small_dam_break(), 2);
+  for (int s = 0; s < 200; ++s) {
+    changing.world->set_threads(1 + s % 3);
+    changing.world->step(changing.world->next_time_step());
+  }
+  expect_identical(one, testing::state_by_id(changing.world->particles()));
 }
 
 // SPH, WCSPH, DFSPH and IISPH share PCISPH's reductions (compression_stats.h) and gather-only

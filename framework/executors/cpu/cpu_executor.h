@@ -26,6 +26,8 @@ class CpuExecutor {
   explicit CpuExecutor(int threads = 0);
 
   int threads() const { return threads_; }
+  // Between stages only (a run on a busy machine, thread_share_watch.h): no result depends on it.
+  void set_threads(int threads) { threads_ = threads > 0 ? threads : 1; }
 
   // A world split over ranks attaches its domain: reductions are then global and every stage is
   // followed by a ghost refresh (rank_collectives.h). Null: one rank.
