@@ -50,6 +50,8 @@ MpiDomain::MpiDomain(MPI_Comm comm, Real reach, int rebalance_every, const Perio
   ghost_shift_sends_.resize(std::size_t(ranks_));
   ghost_receives_.assign(std::size_t(ranks_), 0);
   send_scratch_.resize(std::size_t(ranks_));
+  halo_senders_.resize(std::size_t(ranks_));
+  halo_receivers_.resize(std::size_t(ranks_));
 }
 
 void MpiDomain::sum(std::int64_t* values, std::size_t count) const {
@@ -183,6 +185,7 @@ void MpiDomain::make_ghosts() {
   std::vector<int> touching;
   for (auto& list : ghost_sends_) list.clear();
   for (auto& list : ghost_shift_sends_) list.clear();
+  for (auto& sender : halo_senders_) sender.forget();
   const Vec3 r{reach, reach, reach};
   // Every rank whose domain holds a place within reach of `at` gets particle i, shifted.
   auto send_to_ranks_near = [&](std::size_t i, const Vec3& at, const Vec3& shift, bool self) {
@@ -238,6 +241,14 @@ std::vector<std::vector<Vec3>*> MpiDomain::carried_coupling() const {
   return carried;
 }
 
+const std::vector<std::size_t>& MpiDomain::halo_segments(std::size_t count,
+                                                         std::size_t coupling) const {
+  segment_scratch_ = particles_->packed_element_sizes();
+  for (std::size_t& bytes : segment_scratch_) bytes *= count;
+  segment_scratch_.insert(segment_scratch_.end(), coupling, count * sizeof(Vec3));
+  return segment_scratch_;
+}
+
 void MpiDomain::pack_ghosts(const std::vector<std::uint32_t>& indices,
                             const std::vector<std::vector<Vec3>*>& coupling,
                             std::vector<std::uint8_t>& out) const {
@@ -260,23 +271,34 @@ void MpiDomain::refresh_ghosts() const {
   if (!particles_ || (ranks_ == 1 && !periodic_.any())) return;
   Particles& p = *particles_;
   const std::vector<std::vector<Vec3>*> coupling = carried_coupling();
-  for (int r = 0; r < ranks_; ++r)
-    pack_ghosts(ghost_sends_[std::size_t(r)], coupling, send_scratch_[std::size_t(r)]);
+  for (int r = 0; r < ranks_; ++r) {
+    const std::vector<std::uint32_t>& sends = ghost_sends_[std::size_t(r)];
+    send_scratch_[std::size_t(r)].clear();
+    if (sends.empty()) continue;
+    pack_ghosts(sends, coupling, packet_scratch_);
+    halo_senders_[std::size_t(r)].encode(packet_scratch_,
+                                         halo_segments(sends.size(), coupling.size()),
+                                         send_scratch_[std::size_t(r)]);
+    traffic_.halo_bytes += send_scratch_[std::size_t(r)].size();
+  }
   std::vector<int> counts;
   const std::vector<std::uint8_t>& arrived = all_to_all(send_scratch_, counts);
   const std::uint8_t* at = arrived.data();
   std::size_t first = p.owned_size();
   for (int r = 0; r < ranks_; ++r) {
     const std::size_t count = ghost_receives_[std::size_t(r)];
-    p.overwrite_packed(first, at, count);
-    const std::uint8_t* values = at + count * p.packed_size();
-    for (std::vector<Vec3>* out : coupling) {
-      if (count) std::memcpy(static_cast<void*>(&(*out)[first]), values, count * sizeof(Vec3));
-      values += count * sizeof(Vec3);
+    if (count) {
+      const std::vector<std::uint8_t>& packet = halo_receivers_[std::size_t(r)].decode(
+          at, std::size_t(counts[std::size_t(r)]), halo_segments(count, coupling.size()));
+      p.overwrite_packed(first, packet.data(), count);
+      const std::uint8_t* values = packet.data() + count * p.packed_size();
+      for (std::vector<Vec3>* out : coupling) {
+        std::memcpy(static_cast<void*>(&(*out)[first]), values, count * sizeof(Vec3));
+        values += count * sizeof(Vec3);
+      }
     }
     at += counts[std::size_t(r)];
     first += count;
-    traffic_.halo_bytes += send_scratch_[std::size_t(r)].size();
   }
   shift_ghosts();
   ++traffic_.halo_refreshes;
@@ -287,6 +309,7 @@ void MpiDomain::drop_ghosts() {
   particles_->set_ghost_count(0);
   for (auto& list : ghost_sends_) list.clear();
   for (auto& list : ghost_shift_sends_) list.clear();
+  for (auto& sender : halo_senders_) sender.forget();
   ghost_shifts_.clear();
   std::fill(ghost_receives_.begin(), ghost_receives_.end(), 0);
 }

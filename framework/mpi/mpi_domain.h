@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/core/real.h"
+#include "framework/mpi/halo_delta.h"
 #include "framework/mpi/zoltan_rcb.h"
 #include "framework/world/particle_domain.h"
 #include "framework/world/periodic_box.h"
@@ -68,6 +69,8 @@ class MpiDomain final : public ParticleDomain {
   void shift_ghosts() const;
   // The coupling arrays ghosts carry: the active ones, sized for this step.
   std::vector<std::vector<Vec3>*> carried_coupling() const;
+  // The byte lengths of a packet of `count` ghosts' arrays, then of `coupling` arrays of them.
+  const std::vector<std::size_t>& halo_segments(std::size_t count, std::size_t coupling) const;
   // Packs the listed particles' arrays and their values in `coupling`.
   void pack_ghosts(const std::vector<std::uint32_t>& indices,
                    const std::vector<std::vector<Vec3>*>& coupling,
@@ -88,6 +91,11 @@ class MpiDomain final : public ParticleDomain {
   std::vector<std::size_t> ghost_receives_;              // per rank: ghosts it sent here
   std::vector<std::vector<std::uint32_t>> departed_;     // per rank: ids migrated there
   mutable std::vector<std::vector<std::uint8_t>> send_scratch_;
+  // Ghost refreshes send only the arrays that changed (halo_delta.h): per rank, both sides.
+  mutable std::vector<HaloDeltaSender> halo_senders_;
+  mutable std::vector<HaloDeltaReceiver> halo_receivers_;
+  mutable std::vector<std::uint8_t> packet_scratch_;
+  mutable std::vector<std::size_t> segment_scratch_;
   mutable std::vector<std::uint8_t> flat_scratch_, received_scratch_;  // all_to_all's buffers
   mutable DomainTraffic traffic_;
 };

@@ -206,6 +206,15 @@ std::size_t Particles::packed_size() const {
   return bytes;
 }
 
+std::vector<std::size_t> Particles::packed_element_sizes() const {
+  std::vector<std::size_t> sizes;
+  auto& self = const_cast<Particles&>(*this);
+  for_each_array(self, self.scalars_, self.vectors_, [&](auto& values) {
+    sizes.push_back(sizeof(typename std::decay_t<decltype(values)>::value_type));
+  });
+  return sizes;
+}
+
 void Particles::pack(const std::uint32_t* indices, std::size_t count,
                      std::vector<std::uint8_t>& out) const {
   const std::size_t start = out.size();

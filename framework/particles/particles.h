@@ -69,6 +69,9 @@ class Particles {
   void pack(const std::uint32_t* indices, std::size_t count, std::vector<std::uint8_t>& out) const;
   // The bytes of one packed particle.
   std::size_t packed_size() const;
+  // The bytes of one element of each array, in the packed order: a packet of n particles holds
+  // the arrays one after another, n elements each.
+  std::vector<std::size_t> packed_element_sizes() const;
   // Appends `count` particles packed by a Particles with the same fields.
   void append_packed(const std::uint8_t* bytes, std::size_t count);
   // Overwrites particles first, first + 1, ... with `count` packed ones.
