@@ -6,7 +6,7 @@
 
 namespace upf {
 
-void HaloDeltaSender::encode(const std::vector<std::uint8_t>& packet,
+void HaloDeltaSender::encode(std::vector<std::uint8_t>& packet,
                              const std::vector<std::size_t>& segments,
                              std::vector<std::uint8_t>& message) {
   const bool whole = !known_ || segments != last_segments_ || last_.size() != packet.size();
@@ -23,7 +23,7 @@ void HaloDeltaSender::encode(const std::vector<std::uint8_t>& packet,
     }
     at += bytes;
   }
-  last_ = packet;
+  last_.swap(packet);  // no copy: a refresh packs its packet afresh
   last_segments_ = segments;
   known_ = true;
 }

@@ -18,8 +18,9 @@ class HaloDeltaSender {
  public:
   // The message for `packet`, cut into `segments` (byte lengths, in order, summing to its size):
   // a flag byte per segment, then the changed segments. Every segment counts as changed after
-  // forget() and whenever the segments differ from the last packet's.
-  void encode(const std::vector<std::uint8_t>& packet, const std::vector<std::size_t>& segments,
+  // forget() and whenever the segments differ from the last packet's. The packet is kept (its
+  // buffer swapped with the one kept before, whose bytes `packet` then holds).
+  void encode(std::vector<std::uint8_t>& packet, const std::vector<std::size_t>& segments,
               std::vector<std::uint8_t>& message);
   // The receiver's ghosts are new (a new ghost list): the next packet goes whole.
   void forget();
