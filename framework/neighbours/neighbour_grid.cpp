@@ -8,6 +8,7 @@
 
 #include <omp.h>
 
+#include "framework/neighbours/chunked_sort.h"
 #include "framework/neighbours/morton.h"
 
 namespace upf {
@@ -68,13 +69,17 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
 
   // Start from id order, then a stable sort by key gives (key, id) order.
   const ParticleId id_bound = particles.id_bound();
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   if (particles.ghost_count() == 0) {
-    sort_scratch_.assign(id_bound, std::numeric_limits<std::uint32_t>::max());
-    for (std::size_t i = 0; i < n; ++i) sort_scratch_[particles.id[i]] = std::uint32_t(i);
-    sorted_.clear();
-    sorted_.reserve(n);
-    for (std::uint32_t slot : sort_scratch_)
-      if (slot != std::numeric_limits<std::uint32_t>::max()) sorted_.push_back(slot);
+    // Ids are unique: each particle writes its own slot of an id-indexed table, and the table's
+    // filled slots in id order are the particles in id order.
+    sort_scratch_.resize(id_bound);
+    exec.for_each_index(id_bound, [&](std::size_t d) { sort_scratch_[d] = kNone; });
+    const ParticleId* id = particles.id.data();
+    exec.for_each_index(n, [&](std::size_t i) { sort_scratch_[id[i]] = std::uint32_t(i); });
+    chunked_select(
+        exec, id_bound, [&](std::size_t d) { return sort_scratch_[d] != kNone; }, sorted_);
+    exec.for_each_index(n, [&](std::size_t s) { sorted_[s] = sort_scratch_[sorted_[s]]; });
   } else {
     // Ghosts may repeat ids (a periodic image has its particle's id, in another cell): a
     // counting sort by id instead, stable in the index.
@@ -85,17 +90,15 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
     for (std::size_t i = 0; i < n; ++i)
       sorted_[sort_scratch_[particles.id[i]]++] = std::uint32_t(i);
   }
-  sort_by_key(n);
+  radix_sort_by_key(exec, keys_.data(), sorted_, sort_scratch_);
 
-  cell_keys_.clear();
-  cell_begin_.clear();
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint64_t k = keys_[sorted_[s]];
-    if (cell_keys_.empty() || cell_keys_.back() != k) {
-      cell_keys_.push_back(k);
-      cell_begin_.push_back(std::uint32_t(s));
-    }
-  }
+  // A cell begins where the key changes.
+  chunked_select(
+      exec, n, [&](std::size_t s) { return s == 0 || keys_[sorted_[s]] != keys_[sorted_[s - 1]]; },
+      cell_begin_);
+  cell_keys_.resize(cell_begin_.size());
+  exec.for_each_index(cell_keys_.size(),
+                      [&](std::size_t c) { cell_keys_[c] = keys_[sorted_[cell_begin_[c]]]; });
   cell_begin_.push_back(std::uint32_t(n));
   // A dense cell table over the bounding box when it is not much larger than the particle count
   // (tanks, blocks): O(1) cell lookups. Sparse clouds fall back to binary search of the keys.
@@ -111,14 +114,15 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
     }
     if (cells <= 8.0 * double(n) + 4096.0) {
       dense_.assign(std::size_t(cells), 0);
-      for (std::size_t c = 0; c < cell_keys_.size(); ++c) {
+      // Every cell writes its own entry.
+      exec.for_each_index(cell_keys_.size(), [&](std::size_t c) {
         const std::uint64_t k = cell_keys_[c];
         const std::size_t linear =
             compact_bits_3d(k) +
             std::size_t(dims_[0]) *
                 (compact_bits_3d(k >> 1) + std::size_t(dims_[1]) * compact_bits_3d(k >> 2));
         dense_[linear] = std::uint32_t(c + 1);
-      }
+      });
     }
   }
   sorted_x_.resize(n);
@@ -127,33 +131,6 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
     sorted_x_[s] = x[sorted_[s]];
     sorted_type_[s] = particles.type[sorted_[s]];
   });
-}
-
-// LSD radix sort of sorted_ by keys_, 8 bits a pass; passes whose digit is the same for every
-// particle are skipped. Stable, so equal keys keep their id order.
-void NeighbourGrid::sort_by_key(std::size_t n) {
-  constexpr int kPasses = 8;
-  std::array<std::array<std::uint32_t, 256>, kPasses> histogram{};
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint64_t k = keys_[i];
-    for (int p = 0; p < kPasses; ++p) ++histogram[p][(k >> (8 * p)) & 0xff];
-  }
-  sort_scratch_.resize(n);
-  for (int p = 0; p < kPasses; ++p) {
-    auto& h = histogram[p];
-    if (std::any_of(h.begin(), h.end(), [n](std::uint32_t c) { return c == n; })) continue;
-    std::uint32_t sum = 0;
-    for (auto& c : h) {
-      const std::uint32_t c0 = c;
-      c = sum;
-      sum += c0;
-    }
-    for (std::size_t s = 0; s < n; ++s) {
-      const std::uint32_t i = sorted_[s];
-      sort_scratch_[h[(keys_[i] >> (8 * p)) & 0xff]++] = i;
-    }
-    sorted_.swap(sort_scratch_);
-  }
 }
 
 std::size_t NeighbourGrid::CandidateBuffer::gather(const CellRange* ranges, int count,

@@ -49,7 +49,6 @@ class NeighbourGrid {
   void cell_coords(const Vec3& x, std::uint32_t c[3]) const;
   // The 27 neighbour cell ranges of the cell holding sorted slot `cell`, in a fixed order.
   int neighbour_cells(std::size_t cell, CellRange ranges[27]) const;
-  void sort_by_key(std::size_t n);
 
   Real cell_size_;
   Vec3 origin_{};
