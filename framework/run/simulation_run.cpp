@@ -430,9 +430,11 @@ RunResult run_world(World& world, const SceneDescription& scene, const RunOption
     world.restore_state(again);
   };
   CheckpointSchedule checkpoints(options.checkpoint, world.time());
-  // The device pipeline keeps the thread count it was made with.
+  // The device pipeline keeps the thread count it was made with. The world leaves the run with
+  // the count it came with (the Python module steps it on).
   const bool follows_cores = options.follow_free_cores && !world.device();
   ThreadShareWatch free_cores(follows_cores ? world.executor().threads() : 1);
+  const ThreadCountKeeper keep_threads(world);
   double thread_steps = 0;
   const int probe_every = scene.output.probe_every;
 

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "framework/run/machine_load.h"
+#include "framework/world/world.h"
 
 namespace upf {
 
@@ -41,6 +42,19 @@ class ThreadShareWatch {
   double window_seconds_;
   MachineLoadSource source_;
   std::optional<MachineLoadReading> last_;
+};
+
+// Gives a world back the thread count it had when the keeper was made, however the scope ends.
+class ThreadCountKeeper {
+ public:
+  explicit ThreadCountKeeper(World& world) : world_(world), threads_(world.executor().threads()) {}
+  ~ThreadCountKeeper() { world_.set_threads(threads_); }
+  ThreadCountKeeper(const ThreadCountKeeper&) = delete;
+  ThreadCountKeeper& operator=(const ThreadCountKeeper&) = delete;
+
+ private:
+  World& world_;
+  int threads_;
 };
 
 }  // namespace upf

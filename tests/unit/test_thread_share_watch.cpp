@@ -90,6 +90,18 @@ TEST(ThreadShareWatch, KeepsTheCountWhereTheSystemDoesNotSayOrOneThreadWasAskedF
   EXPECT_EQ(m.reads, 0);
 }
 
+// A run that dropped threads gives the world back with the count it came with: the Python module
+// steps it on after Simulation.run.
+TEST(ThreadShareWatch, TheWorldLeavesARunWithItsThreads) {
+  World world(WorldSettings{}, 2);
+  {
+    const ThreadCountKeeper keep(world);
+    world.set_threads(1);
+    EXPECT_EQ(world.executor().threads(), 1);
+  }
+  EXPECT_EQ(world.executor().threads(), 2);
+}
+
 TEST(ThreadShareWatch, ReadsThisMachine) {
   const auto first = read_machine_load();
   ASSERT_TRUE(first.has_value()) << "Linux has /proc/stat";
