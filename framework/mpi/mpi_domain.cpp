@@ -243,8 +243,8 @@ std::vector<std::vector<Vec3>*> MpiDomain::carried_coupling() const {
 
 const std::vector<std::size_t>& MpiDomain::halo_segments(std::size_t count,
                                                          std::size_t coupling) const {
-  segment_scratch_ = particles_->packed_element_sizes();
-  for (std::size_t& bytes : segment_scratch_) bytes *= count;
+  segment_scratch_.clear();
+  for (const std::size_t bytes : element_sizes_) segment_scratch_.push_back(bytes * count);
   segment_scratch_.insert(segment_scratch_.end(), coupling, count * sizeof(Vec3));
   return segment_scratch_;
 }
@@ -271,6 +271,7 @@ void MpiDomain::refresh_ghosts() const {
   if (!particles_ || (ranks_ == 1 && !periodic_.any())) return;
   Particles& p = *particles_;
   const std::vector<std::vector<Vec3>*> coupling = carried_coupling();
+  element_sizes_ = p.packed_element_sizes();  // once a refresh, not once per rank and side
   for (int r = 0; r < ranks_; ++r) {
     const std::vector<std::uint32_t>& sends = ghost_sends_[std::size_t(r)];
     send_scratch_[std::size_t(r)].clear();

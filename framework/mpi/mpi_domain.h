@@ -69,7 +69,8 @@ class MpiDomain final : public ParticleDomain {
   void shift_ghosts() const;
   // The coupling arrays ghosts carry: the active ones, sized for this step.
   std::vector<std::vector<Vec3>*> carried_coupling() const;
-  // The byte lengths of a packet of `count` ghosts' arrays, then of `coupling` arrays of them.
+  // The byte lengths of a packet of `count` ghosts' arrays (element_sizes_), then of `coupling`
+  // arrays of them.
   const std::vector<std::size_t>& halo_segments(std::size_t count, std::size_t coupling) const;
   // Packs the listed particles' arrays and their values in `coupling`.
   void pack_ghosts(const std::vector<std::uint32_t>& indices,
@@ -96,6 +97,7 @@ class MpiDomain final : public ParticleDomain {
   mutable std::vector<HaloDeltaReceiver> halo_receivers_;
   mutable std::vector<std::uint8_t> packet_scratch_;
   mutable std::vector<std::size_t> segment_scratch_;
+  mutable std::vector<std::size_t> element_sizes_;  // Particles::packed_element_sizes, this refresh
   mutable std::vector<std::uint8_t> flat_scratch_, received_scratch_;  // all_to_all's buffers
   mutable DomainTraffic traffic_;
 };
