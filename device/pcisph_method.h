@@ -42,15 +42,20 @@ class PcisphMethod : public ThreeStageMethod {
     Vec3* x_star = raw<Vec3>(*x_star_);
     Real* rho_star = raw<Real>(*rho_star_);
     exec.run(all_particles(s.n), PredictUnownedStage{s.f, s.owns, s.dt, x_star});
-    const PcisphLoopArrays arrays{s.f,
-                                  s.owned,
-                                  s.other_acceleration,
-                                  s.fluid_gradient,
-                                  s.boundary_gradient,
-                                  s.pressure_acceleration,
-                                  x_star,
-                                  rho_star,
-                                  s.pressure};
+    PcisphLoopArrays arrays{s.f,
+                            s.owned,
+                            s.other_acceleration,
+                            s.fluid_gradient,
+                            s.boundary_gradient,
+                            s.pressure_acceleration,
+                            x_star,
+                            rho_star,
+                            s.pressure,
+                            nullptr};
+    if (s.f.density_contrast) {
+      contrast_ratio_.resize(s.n);
+      arrays.contrast_ratio = raw<Real>(contrast_ratio_);
+    }
     return pcisph_correction_loop(
         exec, arrays, setup_.loop, s.dt,
         [&](const CompressionValue& value) { return stopping_(s.owned, value); });
@@ -65,13 +70,14 @@ class PcisphMethod : public ThreeStageMethod {
         CubicSplineGradient{s.f.kernel}, s.boundary_force);
   }
 
-  std::size_t bytes() const { return stopping_.bytes(); }
+  std::size_t bytes() const { return stopping_.bytes() + contrast_ratio_.size() * sizeof(Real); }
 
  private:
   PcisphSetup setup_;
   DeviceStoppingError<Backend> stopping_;
   vector<Real>* rho_star_ = nullptr;
   vector<Vec3>* x_star_ = nullptr;
+  vector<Real> contrast_ratio_;  // with density contrast only
 };
 
 }  // namespace upf::device

@@ -43,8 +43,9 @@ template __global__ void run_stage(BodyWallFloorStage, ParticleRange);
 template __global__ void run_stage(BodyWallHydrostaticReactionStage, ParticleRange);
 
 template __global__ void run_stage(PcisphPredictStage, ParticleRange);
+template __global__ void run_stage(PcisphPredictedDensityStage, ParticleRange);
 template __global__ void run_stage(PcisphCorrectPressureStage, ParticleRange);
-template __global__ void run_stage(PcisphPressureAccelerationStage, ParticleRange);
+template __global__ void run_stage(PcisphAccelerateAndPredictStage, ParticleRange);
 
 template __global__ void run_stage(SphDensityStage<MullerKernelSet>, ParticleRange);
 template __global__ void run_stage(SphViscosityStage<MullerKernelSet>, ParticleRange);

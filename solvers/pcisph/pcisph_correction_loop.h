@@ -22,19 +22,29 @@ struct PcisphLoopArrays {
   Vec3* x_star;
   Real* rho_star;
   Real* pressure;
+  Real* contrast_ratio;  // per particle with density contrast (f.density_contrast), else null
 };
 
 struct PcisphLoopSettings {
   double eta;
   int min_iterations, max_iterations;
-  bool stops_on_average;  // the stopping error is the average compression (stop_percentile 0)
-  double delta_scale;     // delta = delta_scale / dt^2
+  bool stops_on_average;     // the stopping error is the average compression (stop_percentile 0)
+  double delta_scale;        // delta = delta_scale / dt^2
+  double divergence_factor;  // stop once the error exceeds this times its smallest; 0: never
 };
 
-// Predict, correct and accelerate until the stopping error (stopping_error(value): a double from
-// the owned particles' CompressionValue) is at most eta after at least min_iterations, at most
-// max_iterations times. Positions of the particles the solver does not move must already be
-// predicted in x_star. Returns the iterations and the average and largest compression.
+// Predict, test, correct: the positions x* that the current pressures lead to, the densities
+// there, the stopping error (stopping_error(value): a double from the owned particles'
+// CompressionValue), then p += delta (rho* - rho0) and the pressure accelerations. The loop ends
+// after the correction of the first prediction whose error is at most eta, once at least
+// min_iterations corrections are done, or after max_iterations corrections (the paper's loop).
+// It also ends, without correcting, when past min_iterations the error exceeds
+// divergence_factor times its smallest value so far: an iteration that pumps pressure instead of
+// converging (at an impact, with a large step; docs/solvers.md). A correction there would kick
+// the particles with the pumped pressure; without it they land at x*, where the reported errors
+// were measured. Each correction's acceleration pass also makes the next prediction. Positions
+// of the particles the solver does not move must already be predicted in x_star. Returns the
+// corrections and the average and largest compression of the last prediction.
 template <class Executor, class StoppingErrorOf>
 SolverStats pcisph_correction_loop(const Executor& exec, const PcisphLoopArrays& a,
                                    const PcisphLoopSettings& s, Real dt,
@@ -42,24 +52,31 @@ SolverStats pcisph_correction_loop(const Executor& exec, const PcisphLoopArrays&
   const Real delta = Real(s.delta_scale / (double(dt) * double(dt)));
   const PcisphPredictStage predict{a.f, a.other_acceleration, a.pressure_acceleration, dt,
                                    a.x_star};
-  const PcisphCorrectPressureStage correct{a.f, a.x_star, delta, a.rho_star, a.pressure};
-  const PcisphPressureAccelerationStage accelerate{a.f, a.pressure, a.fluid_gradient,
-                                                   a.boundary_gradient, a.pressure_acceleration};
+  const PcisphPredictedDensityStage density{a.f, a.x_star, a.rho_star, a.contrast_ratio};
+  const PcisphCorrectPressureStage correct{a.f, a.rho_star, a.contrast_ratio, delta, a.pressure};
+  const PcisphAccelerateAndPredictStage accelerate{
+      {a.f, a.pressure, a.fluid_gradient, a.boundary_gradient, a.pressure_acceleration}, predict};
   const CompressionValue compression{a.f.rest_density, a.f.material, a.rho_star};
-  double error = 0;
-  int iteration = 0;
-  while (iteration < s.max_iterations) {
-    exec.run(a.owned, predict);
-    exec.run(a.owned, correct);
+  double error = 0, smallest = 0;
+  int corrections = 0;
+  exec.run(a.owned, predict);
+  while (corrections < s.max_iterations) {
+    // rho* is read by its own particle only (the correction's refresh sends it with p).
+    exec.run_unshared(a.owned, density);
     // An exact stopping error (a fixed-point sum for the average): the same iteration count
     // for any thread count and any backend.
     error = stopping_error(compression);
+    if (s.divergence_factor > 0 && corrections > s.min_iterations &&
+        error > s.divergence_factor * smallest)
+      break;
+    smallest = corrections == 0 || error < smallest ? error : smallest;
+    exec.run(a.owned, correct);
     exec.run(a.owned, accelerate);
-    ++iteration;
-    if (iteration >= s.min_iterations && error <= s.eta) break;
+    ++corrections;
+    if (corrections >= s.min_iterations && error <= s.eta) break;
   }
   SolverStats stats;
-  stats.iterations = iteration;
+  stats.iterations = corrections;
   stats.avg_density_error = s.stops_on_average ? error : average_over(exec, a.owned, compression);
   stats.max_density_error = double(exec.max_of(a.owned, compression));
   return stats;

@@ -31,7 +31,7 @@ UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* 
   return a + boundary_pressure_acceleration(f, boundary_gradient, pi, pb, i);
 }
 
-// Step 1 of the loop: v* = v + (a_other + a_p) dt, x* = x + v* dt.
+// The prediction (docs/solvers.md, PCISPH step 2): v* = v + (a_other + a_p) dt, x* = x + v* dt.
 struct PcisphPredictStage {
   FluidView f;
   const Vec3* a_other;
@@ -44,7 +44,19 @@ struct PcisphPredictStage {
   }
 };
 
-// Steps 2 and 3: rho* at the predicted positions, p += delta (rho* - rho0), clamped at 0.
+// Loop step 1: rho* at the predicted positions, and with density contrast fluid_density's ratio
+// r_i (kept for the correction of step 4, which the stopping tests may skip).
+struct PcisphPredictedDensityStage {
+  FluidView f;
+  const Vec3* x_star;
+  Real* rho_star;
+  Real* contrast_ratio;  // null without density contrast
+  UPF_HD void operator()(std::uint32_t i) const {
+    rho_star[i] = fluid_density(f, x_star, i, contrast_ratio ? contrast_ratio + i : nullptr);
+  }
+};
+
+// Loop step 4: p += delta (rho* - rho0), clamped at 0.
 // With density contrast delta / r_i (fluid_density's ratio): delta is the inverse of the diagonal
 // of the pressure-to-density map on a one-liquid lattice, where the neighbours' share dominates.
 // A neighbour j moves by p_i / rho0_j, so that diagonal grows by about r_i (exactly, with
@@ -53,20 +65,20 @@ struct PcisphPredictStage {
 // over-corrected its error five-fold and PCISPH diverged at the interface (docs/multiphase.md).
 struct PcisphCorrectPressureStage {
   FluidView f;
-  const Vec3* x_star;
+  const Real* rho_star;
+  const Real* contrast_ratio;  // null without density contrast
   Real delta;
-  Real* rho_star;
   Real* pressure;
   UPF_HD void operator()(std::uint32_t i) const {
     const Real rho0 = f.rest_density[f.material[i]];
-    Real ratio = 1;  // delta / 1 is delta: one liquid runs bit for bit as without contrast
-    rho_star[i] = fluid_density(f, x_star, i, f.density_contrast ? &ratio : nullptr);
+    // delta / 1 is delta: one liquid runs bit for bit as without contrast
+    const Real ratio = contrast_ratio ? contrast_ratio[i] : Real(1);
     const Real p = pressure[i] + delta / ratio * (rho_star[i] - rho0);
     pressure[i] = p > 0 ? p : Real(0);
   }
 };
 
-// Step 5: the pressure acceleration from the new pressures.
+// Loop step 5: the pressure acceleration from the new pressures.
 struct PcisphPressureAccelerationStage {
   FluidView f;
   const Real* pressure;
@@ -76,6 +88,17 @@ struct PcisphPressureAccelerationStage {
   UPF_HD void operator()(std::uint32_t i) const {
     a_pressure[i] =
         pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i], i);
+  }
+};
+
+// Loop step 5 and the next prediction in one pass: the prediction needs the particle's own new
+// acceleration only, so it needs no pass of its own.
+struct PcisphAccelerateAndPredictStage {
+  PcisphPressureAccelerationStage accelerate;
+  PcisphPredictStage predict;
+  UPF_HD void operator()(std::uint32_t i) const {
+    accelerate(i);
+    predict(i);
   }
 };
 

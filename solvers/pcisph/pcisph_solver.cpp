@@ -25,6 +25,11 @@ ParamBinding<PcisphParams> PcisphSolver::param_binding() {
          "correction iterations at most; not checked against min_iterations: if min_iterations "
          "> max_iterations, the loop stops at max_iterations"},
         &PcisphParams::max_iterations);
+  b.add({"divergence_factor", "1", 1.2, 0, 1000,
+         "past min_iterations, the loop also ends when the stopping error exceeds this times its "
+         "smallest value in the step (an iteration that pumps pressure at an impact instead of "
+         "converging); 0: never"},
+        &PcisphParams::divergence_factor);
   b.add(stop_percentile_spec(), &PcisphParams::stop_percentile);
   b.add(wall_pressure_spec(), &PcisphParams::wall_pressure);
   b.add({"rest_compression", "1", 0.7, 0, 1,
@@ -41,6 +46,7 @@ PcisphSolver::PcisphSolver(const PcisphParams& params, std::vector<MaterialId> m
       stopping_(params.stop_percentile),
       min_iterations_(params.min_iterations),
       max_iterations_(params.max_iterations),
+      divergence_factor_(params.divergence_factor),
       materials_(std::move(materials)) {
   fluid_.wall_pressure = params.wall_pressure != 0;
 }
@@ -107,15 +113,20 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
     Real* rho_star = p[predicted_density_].data();
     Vec3* x_star = p[predicted_position_].data();
     fluid_.predict_unowned(world, f, x_star, dt);
-    const PcisphLoopArrays arrays{f,
-                                  fluid_.owned.range(),
-                                  fluid_.other_acceleration.data(),
-                                  fluid_.fluid_gradient.data(),
-                                  fluid_.boundary_gradient.data(),
-                                  fluid_.pressure_acceleration,
-                                  x_star,
-                                  rho_star,
-                                  pressure};
+    PcisphLoopArrays arrays{f,
+                            fluid_.owned.range(),
+                            fluid_.other_acceleration.data(),
+                            fluid_.fluid_gradient.data(),
+                            fluid_.boundary_gradient.data(),
+                            fluid_.pressure_acceleration,
+                            x_star,
+                            rho_star,
+                            pressure,
+                            nullptr};
+    if (f.density_contrast) {
+      contrast_ratio_.resize(p.size());
+      arrays.contrast_ratio = contrast_ratio_.data();
+    }
     stats_ = pcisph_correction_loop(
         exec, arrays, loop_settings(), dt,
         [&](const CompressionValue&) { return stopping_(exec, fluid_.owned, f, rho_star); });

@@ -8,8 +8,11 @@
 //   rho0)^2,
 // with the sums over a full template neighbourhood on the initial lattice; it scales as 1/dt^2, so
 // the template sum is taken once and delta follows every change of dt. Only compression is
-// corrected: pressures stay >= 0. Boundaries follow Akinci et al. 2012 (shared with every fluid
-// solver); non-pressure forces are gravity and the shared viscosity.
+// corrected: pressures stay >= 0. Past min_iterations the loop also ends, without correcting,
+// when its error rises to divergence_factor times its smallest: at an impact with a large step
+// the iteration can pump pressure instead of converging (pcisph_correction_loop.h). Boundaries
+// follow Akinci et al. 2012 (shared with every fluid solver); non-pressure forces are gravity and
+// the shared viscosity.
 //
 // The time step has a limit of its own besides the shared CFL: pressures start from zero every
 // step, so liquid at rest stays compressed by what min_iterations corrections leave, measured
@@ -34,9 +37,10 @@ namespace upf {
 struct PcisphParams {
   double eta = 0;  // target average compression
   int min_iterations = 0, max_iterations = 0;
-  double stop_percentile = 0;   // StoppingError: 0 the average
-  double wall_pressure = 0;     // boundary_pressure.h: 1 on, 0 Akinci's term alone
-  double rest_compression = 0;  // the resting compression the step allows, as a share of eta
+  double stop_percentile = 0;    // StoppingError: 0 the average
+  double wall_pressure = 0;      // boundary_pressure.h: 1 on, 0 Akinci's term alone
+  double rest_compression = 0;   // the resting compression the step allows, as a share of eta
+  double divergence_factor = 0;  // pcisph_correction_loop.h; 0: the loop never stops for it
 };
 
 class PcisphSolver final : public Solver {
@@ -54,7 +58,8 @@ class PcisphSolver final : public Solver {
   // What a device pipeline needs to run this solver's step on its own arrays (device/): the
   // correction loop's settings (pcisph_correction_loop.h) and the shared fluid state.
   PcisphLoopSettings loop_settings() const {
-    return {eta_, min_iterations_, max_iterations_, stopping_.is_average(), delta_scale_};
+    return {eta_,         min_iterations_,   max_iterations_, stopping_.is_average(),
+            delta_scale_, divergence_factor_};
   }
   double stop_percentile() const { return stopping_.percentile(); }
   std::string cannot_split() const override { return stopping_.cannot_split(); }
@@ -75,6 +80,7 @@ class PcisphSolver final : public Solver {
   double rest_compression_;
   StoppingError stopping_;
   int min_iterations_, max_iterations_;
+  double divergence_factor_;
   std::vector<MaterialId> materials_;
   FluidSolverState fluid_;
   FieldHandle<Vec3> predicted_position_;
@@ -83,6 +89,7 @@ class PcisphSolver final : public Solver {
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   Real rest_time_step_ = 0;   // the resting-compression limit (0: none)
   SolverStats stats_;
+  std::vector<Real> contrast_ratio_;  // per particle, with density contrast only
 };
 
 }  // namespace upf
