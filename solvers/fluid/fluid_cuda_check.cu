@@ -45,6 +45,7 @@ template __global__ void run_stage(BodyWallHydrostaticReactionStage, ParticleRan
 template __global__ void run_stage(PcisphPredictStage, ParticleRange);
 template __global__ void run_stage(PcisphPredictedDensityStage, ParticleRange);
 template __global__ void run_stage(PcisphCorrectPressureStage, ParticleRange);
+template __global__ void run_stage(PcisphPressureAccelerationStage, ParticleRange);
 template __global__ void run_stage(PcisphAccelerateAndPredictStage, ParticleRange);
 
 template __global__ void run_stage(SphDensityStage<MullerKernelSet>, ParticleRange);

@@ -4,6 +4,8 @@
 // give the same bits wherever they run. C++17: nvcc builds it too.
 #pragma once
 
+#include <limits>
+
 #include "framework/executors/average_over.h"
 #include "framework/executors/particle_range.h"
 #include "framework/solver/solver.h"
@@ -42,7 +44,8 @@ struct PcisphLoopSettings {
 // divergence_factor times its smallest value so far: an iteration that pumps pressure instead of
 // converging (at an impact, with a large step; docs/solvers.md). A correction there would kick
 // the particles with the pumped pressure; without it they land at x*, where the reported errors
-// were measured. Each correction's acceleration pass also makes the next prediction. Positions
+// were measured. Each correction's acceleration pass but the last also makes the next
+// prediction. Positions
 // of the particles the solver does not move must already be predicted in x_star. Returns the
 // corrections and the average and largest compression of the last prediction.
 template <class Executor, class StoppingErrorOf>
@@ -54,10 +57,11 @@ SolverStats pcisph_correction_loop(const Executor& exec, const PcisphLoopArrays&
                                    a.x_star};
   const PcisphPredictedDensityStage density{a.f, a.x_star, a.rho_star, a.contrast_ratio};
   const PcisphCorrectPressureStage correct{a.f, a.rho_star, a.contrast_ratio, delta, a.pressure};
-  const PcisphAccelerateAndPredictStage accelerate{
-      {a.f, a.pressure, a.fluid_gradient, a.boundary_gradient, a.pressure_acceleration}, predict};
+  const PcisphPressureAccelerationStage accelerate{a.f, a.pressure, a.fluid_gradient,
+                                                   a.boundary_gradient, a.pressure_acceleration};
+  const PcisphAccelerateAndPredictStage accelerate_and_predict{accelerate, predict};
   const CompressionValue compression{a.f.rest_density, a.f.material, a.rho_star};
-  double error = 0, smallest = 0;
+  double error = 0, smallest = std::numeric_limits<double>::infinity();
   int corrections = 0;
   exec.run(a.owned, predict);
   while (corrections < s.max_iterations) {
@@ -69,11 +73,15 @@ SolverStats pcisph_correction_loop(const Executor& exec, const PcisphLoopArrays&
     if (s.divergence_factor > 0 && corrections > s.min_iterations &&
         error > s.divergence_factor * smallest)
       break;
-    smallest = corrections == 0 || error < smallest ? error : smallest;
+    smallest = error < smallest ? error : smallest;
     exec.run(a.owned, correct);
-    exec.run(a.owned, accelerate);
     ++corrections;
-    if (corrections >= s.min_iterations && error <= s.eta) break;
+    // The last correction's acceleration needs no prediction after it.
+    if ((corrections >= s.min_iterations && error <= s.eta) || corrections == s.max_iterations) {
+      exec.run(a.owned, accelerate);
+      break;
+    }
+    exec.run(a.owned, accelerate_and_predict);
   }
   SolverStats stats;
   stats.iterations = corrections;
