@@ -45,9 +45,8 @@ struct PcisphLoopSettings {
 // converging (at an impact, with a large step; docs/solvers.md). A correction there would kick
 // the particles with the pumped pressure; without it they land at x*, where the reported errors
 // were measured. Each correction's acceleration pass but the last also makes the next
-// prediction. Positions
-// of the particles the solver does not move must already be predicted in x_star. Returns the
-// corrections and the average and largest compression of the last prediction.
+// prediction. Positions of the particles the solver does not move must already be predicted in
+// x_star. Returns the corrections and the average and largest compression of the last prediction.
 template <class Executor, class StoppingErrorOf>
 SolverStats pcisph_correction_loop(const Executor& exec, const PcisphLoopArrays& a,
                                    const PcisphLoopSettings& s, Real dt,
