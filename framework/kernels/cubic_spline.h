@@ -30,6 +30,18 @@ class CubicSplineKernel {
   }
   UPF_HD Real value(const Vec3& r) const { return value(norm(r)); }
 
+  // The same value, bit for bit, with both pieces evaluated and selected: a loop over pairs then
+  // vectorises (solvers/fluid/kernel_sum.h) where value()'s branches, mispredicted at random
+  // distances, do not.
+  UPF_HD Real value_without_branches(Real r) const {
+    const Real q = r * inv_h_;
+    const Real a = Real(1) - q;
+    const Real inner = k_ * (Real(6) * q * q * q - Real(6) * q * q + Real(1));
+    const Real outer = k_ * Real(2) * a * a * a;
+    const Real w = q <= Real(0.5) ? inner : outer;
+    return r >= h_ ? Real(0) : w;
+  }
+
   // Value and gradient together (one square root), for loops that need both.
   UPF_HD Real value_and_gradient(const Vec3& r, Vec3& gradient) const {
     const Real rl = norm(r);

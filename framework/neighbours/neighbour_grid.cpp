@@ -10,6 +10,7 @@
 
 #include "framework/neighbours/chunked_sort.h"
 #include "framework/neighbours/morton.h"
+#include "framework/neighbours/select_within.h"
 
 namespace upf {
 
@@ -133,27 +134,39 @@ void NeighbourGrid::build(const Particles& particles, const CpuExecutor& exec) {
   });
 }
 
-std::size_t NeighbourGrid::CandidateBuffer::gather(const CellRange* ranges, int count,
-                                                   const Vec3* sorted_x) {
+void NeighbourGrid::CandidateBuffer::reserve(std::size_t m) {
+  if (x.size() >= m + 3) return;  // select_within stores groups of four
+  x.resize(m + 3);
+  y.resize(m + 3);
+  z.resize(m + 3);
+  d2.resize(m + 3);
+  particle.resize(m + 3);
+  hit.resize(m + 3);
+}
+
+void NeighbourGrid::gather(const CellRange* ranges, int found, const std::vector<TypeMask>& targets,
+                           CandidateBuffer* buffers, std::size_t* counts) const {
   std::size_t m = 0;
-  for (int c = 0; c < count; ++c) m += ranges[c].end - ranges[c].begin;
-  if (x.size() < m) {
-    x.resize(m);
-    y.resize(m);
-    z.resize(m);
-    d2.resize(m);
-    slot.resize(m);
-    hit.resize(m);
+  for (int c = 0; c < found; ++c) m += ranges[c].end - ranges[c].begin;
+  const std::size_t lists = targets.size();
+  for (std::size_t l = 0; l < lists; ++l) buffers[l].reserve(m);
+  // One pass per list (one pass filling all lists was slower): every candidate is written, and
+  // the count advances only for a target type, with no branch on the type, which alternates at
+  // random beside a wall.
+  for (std::size_t l = 0; l < lists; ++l) {
+    CandidateBuffer& b = buffers[l];
+    const TypeMask target = targets[l];
+    std::size_t k = 0;
+    for (int c = 0; c < found; ++c)
+      for (std::uint32_t u = ranges[c].begin; u < ranges[c].end; ++u) {
+        b.x[k] = sorted_x_[u].x;
+        b.y[k] = sorted_x_[u].y;
+        b.z[k] = sorted_x_[u].z;
+        b.particle[k] = sorted_[u];
+        k += in_mask(target, sorted_type_[u]);
+      }
+    counts[l] = k;
   }
-  std::size_t k = 0;
-  for (int c = 0; c < count; ++c)
-    for (std::uint32_t u = ranges[c].begin; u < ranges[c].end; ++u, ++k) {
-      x[k] = sorted_x[u].x;
-      y[k] = sorted_x[u].y;
-      z[k] = sorted_x[u].z;
-      slot[k] = u;
-    }
-  return m;
 }
 
 int NeighbourGrid::neighbour_cells(std::size_t cell, CellRange ranges[27]) const {
@@ -206,8 +219,6 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
   const std::size_t n = particles.size();
   const std::size_t lists = targets.size();
   const Real r2 = radius * radius;
-  TypeMask any_target = 0;
-  for (TypeMask t : targets) any_target |= t;
   const BodyId* body = particles.body.data();
   // Whether sorted slot s is a query particle (kOfBodiesOnly: only those of a body).
   auto takes = [&](std::uint32_t s) {
@@ -225,7 +236,7 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
   per_thread.resize(static_cast<std::size_t>(threads));
   for (auto& ts : per_thread)
     for (std::size_t l = 0; l < lists; ++l) {
-      ts.buffers[l].clear();
+      ts.used[l] = 0;
       ts.segments[l].clear();
     }
   for (NeighbourList* out : outs) out->offsets.assign(n + 1, 0);
@@ -236,7 +247,6 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
     ThreadScratch& mine = per_thread[std::size_t(omp_get_thread_num())];
     auto& my_buffers = mine.buffers;
     auto& my_segments = mine.segments;
-    CandidateBuffer& cand = mine.candidates;
 #pragma omp for schedule(dynamic, 32)
     for (std::int64_t cell = 0; cell < cells; ++cell) {
       const std::uint32_t first = cell_begin_[std::size_t(cell)];
@@ -247,36 +257,39 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
       CellRange ranges[27];
       const int found = neighbour_cells(std::size_t(cell), ranges);
       // The candidates of the 27 cells, gathered once for all particles of this cell into
-      // coordinate arrays: the distance loop below then vectorises, and the hits are picked out
-      // without a branch per candidate (a hit rate of about 1 in 5 defeats branch prediction).
-      const std::size_t m = cand.gather(ranges, found, sorted_x_.data());
-      const Real* cx = cand.x.data();
-      const Real* cy = cand.y.data();
-      const Real* cz = cand.z.data();
-      Real* d2 = cand.d2.data();
-      std::uint32_t* hit = cand.hit.data();
+      // coordinate arrays, one set per list: the distance loop below then vectorises, and the
+      // hits are picked out without a branch per candidate (select_within.h).
+      std::size_t m[kMaxLists];
+      gather(ranges, found, targets, mine.candidates, m);
       for (std::uint32_t s = first; s < last; ++s) {
         if (!takes(s)) continue;
         const std::uint32_t i = sorted_[s];
-        for (std::size_t l = 0; l < lists; ++l)
-          my_segments[l].push_back({i, std::uint32_t(my_buffers[l].size())});
         const Real xi = sorted_x_[s].x, yi = sorted_x_[s].y, zi = sorted_x_[s].z;
-        for (std::size_t k = 0; k < m; ++k) {
-          const Real dx = xi - cx[k], dy = yi - cy[k], dz = zi - cz[k];
-          d2[k] = dx * dx + dy * dy + dz * dz;
-        }
-        std::size_t hits = 0;
-        for (std::size_t k = 0; k < m; ++k) {
-          hit[hits] = std::uint32_t(k);
-          hits += d2[k] < r2;
-        }
-        for (std::size_t h = 0; h < hits; ++h) {
-          const std::uint32_t u2 = cand.slot[hit[h]];
-          if (u2 == s) continue;
-          const ParticleType tj = sorted_type_[u2];
-          if (!in_mask(any_target, tj)) continue;
-          for (std::size_t l = 0; l < lists; ++l)
-            if (in_mask(targets[l], tj)) my_buffers[l].push_back(sorted_[u2]);
+        for (std::size_t l = 0; l < lists; ++l) {
+          CandidateBuffer& cand = mine.candidates[l];
+          my_segments[l].push_back({i, std::uint32_t(mine.used[l])});
+          const Real* cx = cand.x.data();
+          const Real* cy = cand.y.data();
+          const Real* cz = cand.z.data();
+          Real* d2 = cand.d2.data();
+          for (std::size_t k = 0; k < m[l]; ++k) {
+            const Real dx = xi - cx[k], dy = yi - cy[k], dz = zi - cz[k];
+            d2[k] = dx * dx + dy * dy + dz * dz;
+          }
+          const std::size_t hits = select_within(d2, m[l], r2, cand.hit.data());
+          // The particle itself is a candidate of its own list: written, and not counted.
+          // Grown, never shrunk nor cleared: resizing per particle zeroed memory it then wrote.
+          auto& buffer = my_buffers[l];
+          if (buffer.size() < mine.used[l] + hits)
+            buffer.resize(std::max(2 * buffer.size(), mine.used[l] + hits));
+          std::uint32_t* out = buffer.data() + mine.used[l];
+          std::size_t written = 0;
+          for (std::size_t h = 0; h < hits; ++h) {
+            const std::uint32_t j = cand.particle[cand.hit[h]];
+            out[written] = j;
+            written += j != i;
+          }
+          mine.used[l] += written;
         }
       }
     }
@@ -286,9 +299,9 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
     std::uint32_t* offsets = outs[l]->offsets.data();
     for (int t = 0; t < threads; ++t) {
       const auto& seg = per_thread[std::size_t(t)].segments[l];
-      const auto& buf = per_thread[std::size_t(t)].buffers[l];
+      const auto used = std::uint32_t(per_thread[std::size_t(t)].used[l]);
       for (std::size_t k = 0; k < seg.size(); ++k) {
-        const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : std::uint32_t(buf.size());
+        const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : used;
         offsets[seg[k].particle + 1] = end - seg[k].begin;
       }
     }
@@ -299,8 +312,9 @@ void NeighbourGrid::find_neighbours(const Particles& particles, TypeMask query,
     for (int t = 0; t < threads; ++t) {
       const auto& seg = per_thread[std::size_t(t)].segments[l];
       const auto& buf = per_thread[std::size_t(t)].buffers[l];
+      const auto used = std::uint32_t(per_thread[std::size_t(t)].used[l]);
       for (std::size_t k = 0; k < seg.size(); ++k) {
-        const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : std::uint32_t(buf.size());
+        const std::uint32_t end = k + 1 < seg.size() ? seg[k + 1].begin : used;
         std::copy(buf.begin() + seg[k].begin, buf.begin() + end,
                   indices + offsets[seg[k].particle]);
       }

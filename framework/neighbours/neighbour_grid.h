@@ -65,19 +65,26 @@ class NeighbourGrid {
   struct Segment {
     std::uint32_t particle, begin;
   };
-  // The candidates of one cell's 27 neighbour cells as coordinate arrays (one per thread).
+  // The candidates of one cell's 27 neighbour cells whose type is in one list's target set, as
+  // coordinate arrays (one per thread and list), in the cells' fixed order and id order within a
+  // cell: a list's hits then come out in its order with no type test per hit.
   struct CandidateBuffer {
     std::vector<Real> x, y, z, d2;
-    std::vector<std::uint32_t> slot, hit;  // sorted slot of each candidate; indices of hits
-    std::size_t gather(const CellRange* ranges, int count, const Vec3* sorted_x);
+    std::vector<std::uint32_t> particle, hit;  // particle index of each candidate; hits
+    void reserve(std::size_t m);
   };
+  // Fills the buffers of the target sets from the cell ranges; each list's candidate count goes
+  // into `counts`.
+  void gather(const CellRange* ranges, int found, const std::vector<TypeMask>& targets,
+              CandidateBuffer* buffers, std::size_t* counts) const;
   // One thread's result buffers, on cache lines of its own: threads appending to vectors whose
   // headers shared a line slowed the whole scan down (false sharing).
   static constexpr std::size_t kMaxLists = 4;
   struct alignas(64) ThreadScratch {
     std::vector<std::uint32_t> buffers[kMaxLists];  // neighbour indices, by list
+    std::size_t used[kMaxLists] = {};               // the filled front of each buffer
     std::vector<Segment> segments[kMaxLists];       // where each particle's run starts, by list
-    CandidateBuffer candidates;
+    CandidateBuffer candidates[kMaxLists];
   };
   struct Scratch {
     std::vector<ThreadScratch> threads;

@@ -13,6 +13,7 @@
 
 #include "solvers/fluid/density_contrast.h"
 #include "solvers/fluid/fluid_view.h"
+#include "solvers/fluid/kernel_sum.h"
 #include "solvers/fluid/wall_velocity.h"
 
 namespace upf {
@@ -26,22 +27,24 @@ UPF_HD inline Real fluid_density(const FluidView& f, const Vec3* xf, std::uint32
   const Vec3 xi = xf[i];
   const Real rho0 = f.rest_density[f.material[i]];
   Real rho = f.mass[i] * f.kernel.value(Real(0));
-  Real kernel_sum = 0, weighted = 0;
-  for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
-    const std::uint32_t j = f.fluid.indices[k];
-    const Real w = f.kernel.value(xi - xf[j]);
-    rho += density_weight(f, i, j) * w;
-    if (contrast_ratio) {
-      kernel_sum += w;
+  const std::uint32_t begin = f.fluid.offsets[i], end = f.fluid.offsets[i + 1];
+  if (!f.density_contrast) {
+    rho += kernel_sum(f.kernel, xi, xf, f.fluid.indices, begin, end, ArrayWeight{f.mass});
+  } else {
+    Real kernel_total = 0, weighted = 0;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t j = f.fluid.indices[k];
+      const Real w = f.kernel.value(xi - xf[j]);
+      rho += density_weight(f, i, j) * w;
+      kernel_total += w;
       weighted += w * (rho0 / f.rest_density[f.material[j]]);
     }
+    if (contrast_ratio)
+      *contrast_ratio = kernel_total > Real(0) ? weighted / kernel_total : Real(1);
   }
-  if (contrast_ratio) *contrast_ratio = kernel_sum > Real(0) ? weighted / kernel_sum : Real(1);
-  for (std::uint32_t k = f.boundary.offsets[i]; k < f.boundary.offsets[i + 1]; ++k) {
-    const std::uint32_t b = f.boundary.indices[k];
-    rho += rho0 * f.boundary_volume[b] * f.kernel.value(xi - xf[b]);
-  }
-  return rho;
+  if (contrast_ratio && !f.density_contrast) *contrast_ratio = 1;
+  return rho + rho0 * kernel_sum(f.kernel, xi, xf, f.boundary.indices, f.boundary.offsets[i],
+                                 f.boundary.offsets[i + 1], ArrayWeight{f.boundary_volume});
 }
 
 // Density at the current positions and the kernel gradients there, in one pass: grad W_ij goes
