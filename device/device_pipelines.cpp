@@ -92,6 +92,7 @@ void check_covered(const World& world, const std::string& where) {
     method.stop_percentile = pcisph->stop_percentile();
     method.predicted_density = PcisphSolver::kPredictedDensity;
     method.predicted_position = PcisphSolver::kPredictedPosition;
+    method.scaled_pressure = PcisphSolver::kScaledPressure;
     return device::FluidSolverSetup{fluid_setup(world, solver, pcisph->fluid_state()), method};
   }
   if (const auto* iisph = dynamic_cast<const IisphSolver*>(&solver)) {

@@ -49,7 +49,7 @@ struct FluidSetup {
 struct PcisphSetup {
   PcisphLoopSettings loop{};
   double stop_percentile = 0;
-  std::string predicted_density, predicted_position;  // its fields
+  std::string predicted_density, predicted_position, scaled_pressure;  // its fields
 };
 
 // WcsphSolver's constants (Becker & Teschner 2007).

@@ -30,6 +30,7 @@ class PcisphMethod : public ThreeStageMethod {
   void bind(DeviceParticles<Backend>& p) {
     rho_star_ = &p.scalar_array(setup_.predicted_density);
     x_star_ = &p.vector_array(setup_.predicted_position);
+    scaled_pressure_ = &p.scalar_array(setup_.scaled_pressure);
   }
 
   template <class Executor, class Step>
@@ -51,6 +52,7 @@ class PcisphMethod : public ThreeStageMethod {
                             x_star,
                             rho_star,
                             s.pressure,
+                            raw<Real>(*scaled_pressure_),
                             nullptr};
     if (s.f.density_contrast) {
       contrast_ratio_.resize(s.n);
@@ -77,6 +79,7 @@ class PcisphMethod : public ThreeStageMethod {
   DeviceStoppingError<Backend> stopping_;
   vector<Real>* rho_star_ = nullptr;
   vector<Vec3>* x_star_ = nullptr;
+  vector<Real>* scaled_pressure_ = nullptr;
   vector<Real> contrast_ratio_;  // with density contrast only
 };
 

@@ -24,6 +24,9 @@ struct PcisphLoopArrays {
   Vec3* x_star;
   Real* rho_star;
   Real* pressure;
+  // p / rho0^2 per particle, written with p by each correction (every liquid neighbour is owned
+  // by this solver or a ghost of it: the scene reader refuses liquids of two solvers).
+  Real* scaled_pressure;
   Real* contrast_ratio;  // per particle with density contrast (f.density_contrast), else null
 };
 
@@ -55,9 +58,14 @@ SolverStats pcisph_correction_loop(const Executor& exec, const PcisphLoopArrays&
   const PcisphPredictStage predict{a.f, a.other_acceleration, a.pressure_acceleration, dt,
                                    a.x_star};
   const PcisphPredictedDensityStage density{a.f, a.x_star, a.rho_star, a.contrast_ratio};
-  const PcisphCorrectPressureStage correct{a.f, a.rho_star, a.contrast_ratio, delta, a.pressure};
-  const PcisphPressureAccelerationStage accelerate{a.f, a.pressure, a.fluid_gradient,
-                                                   a.boundary_gradient, a.pressure_acceleration};
+  const PcisphCorrectPressureStage correct{a.f,   a.rho_star, a.contrast_ratio,
+                                           delta, a.pressure, a.scaled_pressure};
+  const PcisphPressureAccelerationStage accelerate{a.f,
+                                                   a.pressure,
+                                                   a.scaled_pressure,
+                                                   a.fluid_gradient,
+                                                   a.boundary_gradient,
+                                                   a.pressure_acceleration};
   const PcisphAccelerateAndPredictStage accelerate_and_predict{accelerate, predict};
   const CompressionValue compression{a.f.rest_density, a.f.material, a.rho_star};
   double error = 0, smallest = std::numeric_limits<double>::infinity();

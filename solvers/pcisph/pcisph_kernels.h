@@ -10,21 +10,21 @@ namespace upf {
 
 // Pressure acceleration of fluid particle i at the current positions, with the paper's symmetric
 // form and rest densities in the denominators (as in the derivation of delta):
-//   a_i = -sum_j m_j (p_i/rho0_i^2 + p_j/rho0_j^2) grad W_ij
-//         -sum_b Psi_b (p_i + p_b)/rho0_i^2 grad W_ib    (boundary_pressure.h)
-// (the pair term of density_contrast.h where liquids differ in rest density)
-// `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from density_and_gradients:
-// the positions do not move during the correction loop, so neither do the gradients.
+//   a_i = -sum_j m_j (P_i + P_j) grad W_ij - sum_b Psi_b (p_i + p_b)/rho0_i^2 grad W_ib,
+// P = p / rho0^2 (`scaled_pressure`, written beside p by the correction so that no pair divides;
+// boundary_pressure.h for the walls, density_contrast.h's pair term where liquids differ in rest
+// density). `fluid_gradient` and `boundary_gradient` (sum_b V_b grad W_ib) come from
+// density_and_gradients: the positions do not move during the correction loop, so neither do the
+// gradients.
 UPF_HD inline Vec3 pcisph_pressure_acceleration(const FluidView& f, const Real* pressure,
+                                                const Real* scaled_pressure,
                                                 FluidGradients fluid_gradient,
                                                 const Vec3& boundary_gradient, std::uint32_t i) {
-  const Real rho0 = f.rest_density[f.material[i]];
-  const Real pi = pressure[i] / (rho0 * rho0);
+  const Real pi = scaled_pressure[i];
   Vec3 a{};
   for (std::uint32_t k = f.fluid.offsets[i]; k < f.fluid.offsets[i + 1]; ++k) {
     const std::uint32_t j = f.fluid.indices[k];
-    const Real rho0j = f.rest_density[f.material[j]];
-    a -= fluid_gradient.at(f, i, k) * pressure_pair(f, i, j, pi, pressure[j] / (rho0j * rho0j));
+    a -= fluid_gradient.at(f, i, k) * pressure_pair(f, i, j, pi, scaled_pressure[j]);
   }
   const Real pb = mirrored_pressure_factor(
       f, PressureOverRestDensitySquared{pressure, f.rest_density, f.material}, i);
@@ -56,7 +56,7 @@ struct PcisphPredictedDensityStage {
   }
 };
 
-// Loop step 4: p += delta (rho* - rho0), clamped at 0.
+// Loop step 4: p += delta (rho* - rho0), clamped at 0, and P = p / rho0^2 for the acceleration.
 // With density contrast delta / r_i (fluid_density's ratio): delta is the inverse of the diagonal
 // of the pressure-to-density map on a one-liquid lattice, where the neighbours' share dominates.
 // A neighbour j moves by p_i / rho0_j, so that diagonal grows by about r_i (exactly, with
@@ -69,12 +69,14 @@ struct PcisphCorrectPressureStage {
   const Real* contrast_ratio;  // null without density contrast
   Real delta;
   Real* pressure;
+  Real* scaled_pressure;
   UPF_HD void operator()(std::uint32_t i) const {
     const Real rho0 = f.rest_density[f.material[i]];
     // delta / 1 is delta: one liquid runs bit for bit as without contrast
     const Real ratio = contrast_ratio ? contrast_ratio[i] : Real(1);
     const Real p = pressure[i] + delta / ratio * (rho_star[i] - rho0);
     pressure[i] = p > 0 ? p : Real(0);
+    scaled_pressure[i] = pressure[i] / (rho0 * rho0);
   }
 };
 
@@ -82,12 +84,13 @@ struct PcisphCorrectPressureStage {
 struct PcisphPressureAccelerationStage {
   FluidView f;
   const Real* pressure;
+  const Real* scaled_pressure;
   FluidGradients fluid_gradient;
   const Vec3* boundary_gradient;
   Vec3* a_pressure;
   UPF_HD void operator()(std::uint32_t i) const {
-    a_pressure[i] =
-        pcisph_pressure_acceleration(f, pressure, fluid_gradient, boundary_gradient[i], i);
+    a_pressure[i] = pcisph_pressure_acceleration(f, pressure, scaled_pressure, fluid_gradient,
+                                                 boundary_gradient[i], i);
   }
 };
 

@@ -71,6 +71,7 @@ void PcisphSolver::prepare(World& world) {
   Particles& p = world.particles();
   predicted_position_ = p.declare_position_vector(kPredictedPosition);
   predicted_density_ = p.declare_scalar(kPredictedDensity);
+  scaled_pressure_ = p.declare_scratch_scalar(kScaledPressure);
   reference_speed_ = free_fall_speed(world);
   delta_scale_ = template_delta_scale(world.settings().spacing, world.kernel());
   // rest_compression eta = kRestCompression g H (dt / s)^2 with g H = v_ref^2 / 2.
@@ -122,6 +123,7 @@ void PcisphSolver::step(World& world, Real dt, StageRunner& run) {
                             x_star,
                             rho_star,
                             pressure,
+                            p[scaled_pressure_].data(),
                             nullptr};
     if (f.density_contrast) {
       contrast_ratio_.resize(p.size());

@@ -66,6 +66,9 @@ class PcisphSolver final : public Solver {
   const FluidSolverState& fluid_state() const { return fluid_; }
   static constexpr const char* kPredictedPosition = "pcisph.predicted_position";
   static constexpr const char* kPredictedDensity = "pcisph.predicted_density";
+  // p / rho0^2, beside the pressure (pcisph_pressure_acceleration): a scratch field, so that ghosts
+  // get it with the pressure.
+  static constexpr const char* kScaledPressure = "pcisph.pressure_over_rest_density_squared";
   // Resting compression = kRestCompression g H (dt / s)^2, fitted to a 0.3 m deep tank at 1 and
   // 2 cm spacing and 1 to 3.3 ms steps (0.15 to 0.16; docs/bodies.md).
   static constexpr double kRestCompression = 0.16;
@@ -85,6 +88,7 @@ class PcisphSolver final : public Solver {
   FluidSolverState fluid_;
   FieldHandle<Vec3> predicted_position_;
   FieldHandle<Real> predicted_density_;
+  FieldHandle<Real> scaled_pressure_;
   double delta_scale_ = 0;    // delta = delta_scale_ / dt^2
   Real reference_speed_ = 0;  // sqrt(2 g H) of the initial liquid, for the CFL limit
   Real rest_time_step_ = 0;   // the resting-compression limit (0: none)
