@@ -89,10 +89,6 @@ inline Registry coupled_registry() {
   return r;
 }
 
-// Physics tests run their scenes on one thread and ctest runs two of them at a time
-// (tests/CMakeLists.txt): a scene's bits do not depend on the thread count (the Determinism tests
-// and the tests named for threads check that on two threads), and two one-thread processes keep
-// two cores busier than one two-thread process does.
 struct TestWorld {
   Registry registry = coupled_registry();
   SceneDescription scene;

@@ -75,7 +75,7 @@ TEST(Buoyancy, CubeOfHalfWaterDensityFloatsWithItsCentreOnTheWaterline) {
 // on the floor (y = 0), where Bullet's contact with the container holds it.
 TEST(Buoyancy, SphereOfDensity1500SinksAndRestsOnTheFloor) {
   constexpr double kRadius = 0.06;  // the icosphere asset has radius 0.5
-  TestWorld t(tank_with_body("pcisph", 1500, "icosphere.ply", 2 * kRadius, {0.25, 0.2, 0.25}), 1);
+  TestWorld t(tank_with_body("pcisph", 1500, "icosphere.ply", 2 * kRadius, {0.25, 0.2, 0.25}), 2);
   t.run_until(1.5);
   const BodyState& s = bodies_of(*t.world).state(0);
   const double bottom = s.position.y() - kRadius;
@@ -97,7 +97,7 @@ TEST(Buoyancy, AFixedCubeUnderWaterIsPushedUpWithTheWeightOfWaterItDisplaces) {
   constexpr double kSide = 0.16;
   nlohmann::json doc = tank_with_body("pcisph", 1000, "unit_box.obj", kSide, {0.25, 0.14, 0.25});
   doc["materials"]["solid"] = {{"type", "frozen"}};
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   t.run_until(0.8);
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
   double time = 0;

@@ -60,7 +60,7 @@ double cap_angle(const Particles& p) {
 
 // The contact angle in degrees after `seconds`.
 double contact_angle(double adhesion_ratio, double seconds) {
-  TestWorld t(drop_on_a_wall("adhesion", adhesion_ratio), 1);
+  TestWorld t(drop_on_a_wall("adhesion", adhesion_ratio), 2);
   t.run_until(seconds);
   return cap_angle(t.world->particles());
 }
@@ -90,7 +90,7 @@ TEST(ContactAngle, FallsAsTheAdhesionRatioRises) {
 // angle asked for within 10 degrees, the mean of its cap angle at 0.4, 0.5 and 0.6 s.
 TEST(ContactAngle, TheAngleAskedForIsReachedWithinTenDegrees) {
   for (const double asked : {90.0, 120.0, 150.0}) {
-    TestWorld t(drop_on_a_wall("contact_angle", asked), 1);
+    TestWorld t(drop_on_a_wall("contact_angle", asked), 2);
     double sum = 0;
     for (const double at : {0.4, 0.5, 0.6}) {
       t.run_until(at);

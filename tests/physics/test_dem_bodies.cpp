@@ -44,7 +44,7 @@ TEST(DemBodies, GrainsAndBodyConserveMomentumWithoutGravity) {
           {{"file", kAssets + "unit_box.obj"}, {"scale", 0.12}, {"position", {0.6, 0.2, 0.2}}}}}}},
       {"time", {{"fixed_dt", 0.001}}},
   };
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   const auto& bodies = dynamic_cast<const RigidBodySystem&>(*t.world->body_systems().front());
   auto grain_momentum = [&] {
     const Particles& p = t.world->particles();

@@ -259,7 +259,7 @@ TEST(DemLinear, ElasticFrictionlessGrainsConserveEnergyInAClosedBox) {
                             {"min", {0.12, 0.03, 0.03}},
                             {"max", {0.18, 0.09, 0.09}},
                             {"velocity", {-0.5, 0, 0.2}}}};
-  TestWorld t(grain_scene(mat, "dem_linear", {0, 0, 0}, blocks, 0.002, {0.2, 0.12, 0.12}, 0.05), 1);
+  TestWorld t(grain_scene(mat, "dem_linear", {0, 0, 0}, blocks, 0.002, {0.2, 0.12, 0.12}, 0.05), 2);
   const Particles& p = t.world->particles();
   const double r = 0.01;
   auto energy = [&] {

@@ -48,7 +48,7 @@ TEST(DemFluid, BeadSettlesInWaterAtTheDiFeliceTerminalVelocity) {
   }
   const double terminal = 0.5 * (lo + hi);
 
-  TestWorld t(grain_in_water("pcisph", rho_p, r, {0, -g, 0}, {0, 0, 0}, false), 1);
+  TestWorld t(grain_in_water("pcisph", rho_p, r, {0, -g, 0}, {0, 0, 0}, false), 2);
   t.run_until(0.4);
   double sum = 0;
   int n = 0;
@@ -74,7 +74,7 @@ TEST(DemFluid, BeadSettlesInWaterAtTheDiFeliceTerminalVelocity) {
 // takes up exactly the momentum the bead loses (the liquid gathers the opposite of every grain's
 // fluid force).
 TEST(DemFluid, BeadAndWaterConserveMomentumWithoutGravity) {
-  TestWorld t(grain_in_water("pcisph", 2500, 0.008, {0, 0, 0}, {0.3, 0, 0}, true), 1);
+  TestWorld t(grain_in_water("pcisph", 2500, 0.008, {0, 0, 0}, {0.3, 0, 0}, true), 2);
   auto momentum = [&](ParticleType type) { return momentum_of(t.world->particles(), type); };
   const Eigen::Vector3d grain0 = momentum(ParticleType::Granular);
   const Eigen::Vector3d total0 = grain0 + momentum(ParticleType::Liquid);

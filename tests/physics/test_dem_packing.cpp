@@ -39,7 +39,7 @@ double settled_solid_fraction(const nlohmann::json& block_options) {
       {"containers", {{{"material", "walls"}, {"min", {0, 0, 0}}, {"max", {kWidth, 0.4, kWidth}}}}},
       {"granular_blocks", {block}},
       {"time", {{"dt_max", 0.002}}}};
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   t.run_until(0.8);
   const Particles& p = t.world->particles();
   double top = 0;

@@ -40,7 +40,7 @@ double heap_angle(double mu, double half_width) {
          {"min", {0.6 - half_width, 0, 0}},
          {"max", {0.6 + half_width, 0.4, 0.06}}}}},
       {"time", {{"dt_max", 0.002}}}};
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   t.run_until(2.0);
   const Particles& p = t.world->particles();
   std::map<int, double> top;

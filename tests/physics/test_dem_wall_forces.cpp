@@ -64,7 +64,7 @@ ColumnForces settled_column(double wall_friction) {
          {"packing", "random"},
          {"solid_fraction", 0.3}}}},
       {"time", {{"dt_max", 0.002}}}};
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   World& w = *t.world;
   const Solver& dem = *w.solvers().front();
   const std::vector<SolverTable> tables = dem.tables(w);

@@ -56,7 +56,7 @@ TEST(Emitters, EmittedMassIsRho0AVTWithinOneLayerThroughRampsStopsAndRestarts) {
   // Ramp up, hold, shut off, and restart faster.
   const nlohmann::json speed = {{0.0, 0.0}, {0.1, 1.0},  {0.3, 1.0}, {0.31, 0.0},
                                 {0.5, 0.0}, {0.51, 2.0}, {0.7, 2.0}};
-  TestWorld t(tank_fed_by_a_hose(speed), 1);
+  TestWorld t(tank_fed_by_a_hose(speed), 2);
   const Emitter& hose = emitter_of(*t.world);
   ASSERT_NEAR(hose.area(), 0.01, 1e-8);  // h is a float: 0.02 to 7 digits
   const double rho0 = 1000, m = rho0 * kSpacing * kSpacing * kSpacing;
@@ -96,7 +96,7 @@ TEST(Emitters, EmittedMassIsRho0AVTWithinOneLayerThroughRampsStopsAndRestarts) {
 TEST(Emitters, EmittedMinusRemovedIsWhatIsThereEveryStep) {
   nlohmann::json doc = tank_fed_by_a_hose(1.5);
   doc["sinks"] = {{{"name", "drain"}, {"min", {0, -1, 0}}, {"max", {0.2, 0.1, 0.2}}}};
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   std::size_t emitted = 0, removed = 0;
   while (t.world->time() < 1.0 - 1e-12) {
     t.world->step(t.world->next_time_step_until(1.0));
@@ -117,7 +117,7 @@ TEST(Emitters, EmittedMinusRemovedIsWhatIsThereEveryStep) {
 // what a wave gauge reads (the "volume" height probe) in two corners away from the jet, and its
 // rate is the least-squares slope once the pool has formed.
 TEST(Emitters, ATankFedByAHoseFillsAtQOverItsArea) {
-  TestWorld t(tank_fed_by_a_hose(1.0), 1);
+  TestWorld t(tank_fed_by_a_hose(1.0), 2);
   const double q = emitter_of(*t.world).area() * 1.0, tank_area = 0.2 * 0.2;
   ProbeDesc gauge;
   gauge.kind = ProbeKind::Height;
@@ -213,7 +213,7 @@ JetOnPlate jet_on_a_plate(double tilt_degrees) {
         {{"min", {0.65, -1, -1}}, {"max", {2, 2, 2}}}}},
       {"time", {{"end", 0.7}, {"dt_max", 0.002}}},
   };
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   const double area = emitter_of(*t.world).area();
   const Eigen::Vector3d normal(std::cos(alpha), std::sin(alpha), 0);
   double expected_impulse = 0;
@@ -280,7 +280,7 @@ TEST(Emitters, AChannelWithInletAndOutletHoldsASteadyVolume) {
       {"sinks", {{{"min", {1.0, -1, -1}}, {"max", {2, 2, 2}}}}},
       {"time", {{"end", 16.0}, {"dt_max", 0.002}}},
   };
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   constexpr std::size_t kSeconds = 10;
   std::vector<double> volume(kSeconds, 0.0), span(kSeconds, 0.0);  // over each second from 6 s
   double in = 0, out = 0;

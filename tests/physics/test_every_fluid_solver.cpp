@@ -69,7 +69,7 @@ bool liquid_near_walls(const Particles& p) {
 class EveryFluidSolver : public ::testing::TestWithParam<std::string> {
  protected:
   TestWorld world_of(const nlohmann::json& doc) {
-    return TestWorld(doc, 1, every_solver_registry());
+    return TestWorld(doc, 2, every_solver_registry());
   }
   // Steps cube_shot_into_water's `doc` (see FluidAndBodyConserveMomentumOver1000Steps) and
   // checks that fluid + body momentum drifts by less than 1e-3 of what they exchanged.

@@ -53,7 +53,7 @@ void expect_hydrostatic_to_the_floor(const HydrostaticTankResult& r, double supp
 // water level kept, rest (RMS velocity below 1 % of sqrt(g H)), every slab hydrostatic within 5 %.
 HydrostaticTankResult expect_incompressible_tank(const nlohmann::json& doc, double eta,
                                                  double average_time = 0.25) {
-  const HydrostaticTankResult r = testing::run_hydrostatic_tank(doc, 1, 1.5, average_time);
+  const HydrostaticTankResult r = testing::run_hydrostatic_tank(doc, 2, 1.5, average_time);
   testing::print_hydrostatic_tank(r);
   EXPECT_LT(r.last_step.avg_density_error, eta);
   EXPECT_LT(std::max(r.max_error, r.max_error_edges), 0.03);
@@ -123,7 +123,7 @@ TEST(HydrostaticTank, DfsphBoundingTheLargestCompressionKeepsEveryParticleBelowE
 // Without it, the floor layer sinks and reads far above rho0 g d: what the wall pressure fixes.
 TEST(HydrostaticTank, PcisphWithAkincisTermAloneReadsTooHighOnTheFloor) {
   const auto doc = testing::load_sample_json("hydrostatic_tank.json");
-  const HydrostaticTankResult r = testing::run_hydrostatic_tank(doc, 1, 1.5, 0.25);
+  const HydrostaticTankResult r = testing::run_hydrostatic_tank(doc, 2, 1.5, 0.25);
   ASSERT_FALSE(r.layers.empty());
   std::printf("floor layer at %.4f m: %.3f rho0 g d\n", r.layers.front().height,
               r.layers.front().measured / r.layers.front().expected);

@@ -60,7 +60,7 @@ double amplitude(const Particles& p) {
 
 // The decay rate [1/s] measured between t1 and t2 with steps of dt.
 double decay_rate(double dt, double t1, double t2, bool implicit = true) {
-  TestWorld t(shear_wave_scene(dt, implicit), 1);
+  TestWorld t(shear_wave_scene(dt, implicit), 2);
   Particles& p = t.world->particles();
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.type[i] == ParticleType::Liquid)

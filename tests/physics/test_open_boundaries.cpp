@@ -53,7 +53,7 @@ struct ChannelLevels {
 // The depths that wave gauges (the "volume" height probe, 3 spacings wide) read along the
 // channel's centre line, averaged over 4-7 s, once the flow has settled.
 ChannelLevels run_channel(const nlohmann::json& doc, const std::vector<double>& gauges) {
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   ProbeDesc gauge;
   gauge.kind = ProbeKind::Height;
   gauge.axis = 1;
@@ -142,7 +142,7 @@ TEST(OpenBoundaries, AParabolicInletImposesHagenPoiseuillesProfileAtTheRateAU) {
          {"profile", "parabolic"}}}},
       {"time", {{"end", end}}},
   };
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   t.run_until(end);
   const Particles& p = t.world->particles();
   std::size_t emitted = 0;
@@ -201,7 +201,7 @@ TEST(Emitters, ReuseKeepsAnEmittersParticlesWithinMaxParticlesAndPoursOn) {
       {"sinks", {{{"min", {0, -1, 0}}, {"max", {0.1, 0.05, 0.2}}, {"reuse", "hose"}}}},
       {"time", {{"end", 1.2}}},
   };
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   const auto& hose = dynamic_cast<const Emitter&>(*t.world->sources().front());
   std::size_t most = 0;
   StateWriter saved;
@@ -221,7 +221,7 @@ TEST(Emitters, ReuseKeepsAnEmittersParticlesWithinMaxParticlesAndPoursOn) {
   EXPECT_EQ(t.world->particles().id_bound() - hose.created(),
             t.world->particles().size() - t.world->count(ParticleType::Liquid))
       << "every particle the hose made took a new id";
-  TestWorld resumed(doc, 1);
+  TestWorld resumed(doc, 2);
   StateReader in(saved.bytes(), "mid-reuse");
   resumed.world->restore_state(in);
   resumed.run_until(1.2);

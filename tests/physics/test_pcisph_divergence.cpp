@@ -49,7 +49,7 @@ struct Landing {
 
 // The steps of a run to 0.5 s, up to t = 0.13 s.
 Landing land(double divergence_factor) {
-  testing::TestWorld tw(dam_break_model(divergence_factor), 1);
+  testing::TestWorld tw(dam_break_model(divergence_factor), 2);
   World& w = *tw.world;
   Landing l;
   try {

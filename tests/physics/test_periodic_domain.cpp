@@ -32,7 +32,7 @@ Collapse collapse(const std::string& solver, bool straddling) {
     doc["fluid_blocks"] = {
         {{"material", "water"}, {"min", {0.48, 0, 0}}, {"max", {1.12, 0.8, 0.4}}}};
   const double centre = straddling ? 0 : 0.8;
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   Collapse out;
   while (t.world->time() < 0.25 - 1e-12) {
     t.world->step(t.world->next_time_step_until(0.25));

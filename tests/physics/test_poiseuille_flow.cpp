@@ -87,7 +87,7 @@ Profile measure(const Particles& p) {
 
 // Steady state: the slowest mode decays as exp(-pi^2 nu t / H^2), 247 /s; by 0.08 s it is gone.
 Profile steady_profile(double dt, const std::string& solver) {
-  TestWorld t(channel_scene(dt, solver), 1);
+  TestWorld t(channel_scene(dt, solver), 2);
   t.run_until(0.08);
   return measure(t.world->particles());
 }
@@ -133,7 +133,7 @@ TEST(PoiseuilleFlow, FreeSlipWallsLetTheChannelAccelerateAsAPlug) {
   liquid["viscosity"] = 0.01;
   liquid["boundary_viscosity"] = 0.01;
   doc["materials"]["walls"]["free_slip"] = 1;
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   t.run_until(t_end);
   const Particles& p = t.world->particles();
   const int layers = int(std::lround(kGap / kSpacing));

@@ -35,7 +35,7 @@ ForceRecord floating_cube_force(double spacing, const nlohmann::json& solver, do
                                       {0.25, 0.3 - 0.7 * kSide + 0.5 * kSide, 0.25});
   doc["particle_spacing"] = spacing;
   doc["time"]["dt_max"] = dt_max;
-  TestWorld t(doc, 1);
+  TestWorld t(doc, 2);
   t.run_until(1.0);
   double sum = 0, sum2 = 0, time = 0;
   int steps = 0;

@@ -19,7 +19,7 @@ namespace {
 // alone drifts the momentum by 2 % of the exchange here. 1000 steps of 0.4 ms: 0.4 s, before
 // the splash reaches the tank's walls (at about 0.45 s), whose forces are external.
 TEST(RigidCoupling, FluidAndBodyMomentumIsConservedWithoutGravity) {
-  TestWorld t(cube_shot_into_water("pcisph"), 1);
+  TestWorld t(cube_shot_into_water("pcisph"), 2);
   auto fluid_momentum = [&] { return momentum_of(t.world->particles(), ParticleType::Liquid); };
 
   const Eigen::Vector3d body0 = bodies_of(*t.world).momentum();

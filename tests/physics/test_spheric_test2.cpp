@@ -84,7 +84,7 @@ Series run_coarse(double end) {
   doc["particle_spacing"] = 0.05;
   doc["bodies"][0]["mesh"]["file"] =
       (std::filesystem::path(UPF_SOURCE_DIR) / "assets" / "meshes" / "unit_box.obj").string();
-  testing::TestWorld tw(doc, 1);
+  testing::TestWorld tw(doc, 2);
   World& w = *tw.world;
   Series s;
   auto sample = [&] {
@@ -134,7 +134,7 @@ void expect_gauge_window(const Series& experiment, const Series& simulation,
   EXPECT_NEAR(simulated, measured, tolerance * measured) << label;
 }
 
-// One run (8 s), three comparisons.
+// One run (8 s on two threads), three comparisons.
 TEST(SphericTest2, CoarseRunFollowsTheExperiment) {
   const Series experiment = experiment_traces();
   const Series simulation = run_coarse(1.5);

@@ -34,7 +34,7 @@ Bounds run(const std::string& solver, double eta, double percentile,
   doc["materials"]["water"]["solver"] = {
       {"name", solver}, {"eta", eta}, {"stop_percentile", percentile}, {"max_iterations", 200}};
   if (summed_density_check) doc["materials"]["water"]["solver"]["summed_density_check"] = 1;
-  testing::TestWorld tw(doc, 1);
+  testing::TestWorld tw(doc, 2);
   World& w = *tw.world;
   Bounds b;
   while (w.time() < 0.6 - 1e-12) {

@@ -53,7 +53,7 @@ TEST(SurfaceTension, CubeOfWaterRelaxesToABallWithoutLosingParticles) {
   d.cube = true;
   d.sigma = 0.01;
   d.viscosity = 3e-4;
-  TestWorld t(drop_scene(d), 1);
+  TestWorld t(drop_scene(d), 2);
   const Particles& p = t.world->particles();
   std::size_t liquid = 0;
   for (std::size_t i = 0; i < p.size(); ++i) liquid += p.type[i] == ParticleType::Liquid;

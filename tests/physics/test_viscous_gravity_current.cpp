@@ -47,7 +47,7 @@ double front_at(double nu, double t) {
          {"min", {c - kHalfWidth, 0, c - kHalfWidth}},
          {"max", {c + kHalfWidth, kHeight, c + kHalfWidth}}}}},
       {"time", {{"end", t}, {"dt_max", 0.005}}}};
-  TestWorld tw(doc, 1);
+  TestWorld tw(doc, 2);
   tw.run_until(t);
   const Particles& p = tw.world->particles();
   std::vector<double> r;
