@@ -83,6 +83,7 @@ class MpiDomain final : public ParticleDomain {
   int rebalance_every_;
   bool balanced_ = false;
   std::unique_ptr<ZoltanRcb> rcb_;
+  std::vector<float> balance_weights_;  // per owned particle, for rcb_->balance
   Particles* particles_ = nullptr;
   CouplingArrays* coupling_ = nullptr;
   PeriodicBox periodic_;

@@ -17,9 +17,12 @@ int count_of(void* data, int* error) {
 }
 
 void list_of(void* data, int /*gid_size*/, int /*lid_size*/, ZOLTAN_ID_PTR gids, ZOLTAN_ID_PTR lids,
-             int /*weight_dim*/, float* /*weights*/, int* error) {
+             int /*weight_dim*/, float* weights, int* error) {
   const auto* p = static_cast<const PointsView*>(data);
-  for (std::size_t i = 0; i < p->count; ++i) gids[i] = lids[i] = ZOLTAN_ID_TYPE(i);
+  for (std::size_t i = 0; i < p->count; ++i) {
+    gids[i] = lids[i] = ZOLTAN_ID_TYPE(i);
+    weights[i] = p->weight[i];
+  }
   *error = ZOLTAN_OK;
 }
 
@@ -59,7 +62,7 @@ ZoltanRcb::ZoltanRcb(MPI_Comm comm) {
   Zoltan_Set_Param(zz_, "LB_METHOD", "RCB");
   Zoltan_Set_Param(zz_, "NUM_GID_ENTRIES", "1");
   Zoltan_Set_Param(zz_, "NUM_LID_ENTRIES", "1");
-  Zoltan_Set_Param(zz_, "OBJ_WEIGHT_DIM", "0");   // every particle counts one
+  Zoltan_Set_Param(zz_, "OBJ_WEIGHT_DIM", "1");   // a weight per particle
   Zoltan_Set_Param(zz_, "RETURN_LISTS", "NONE");  // owners come from the kept cuts
   Zoltan_Set_Param(zz_, "KEEP_CUTS", "1");
   Zoltan_Set_Param(zz_, "RCB_RECTILINEAR_BLOCKS", "1");  // boxes: a particle has one owner
@@ -76,8 +79,8 @@ ZoltanRcb::~ZoltanRcb() {
   Zoltan_Destroy(&zz_);
 }
 
-void ZoltanRcb::balance(const Vec3* points, std::size_t count) {
-  points_ = {points, count};
+void ZoltanRcb::balance(const Vec3* points, const float* weights, std::size_t count) {
+  points_ = {points, weights, count};
   int changes = 0, gid_size = 1, lid_size = 1, imports = 0, exports = 0;
   ZOLTAN_ID_PTR import_gids = nullptr, import_lids = nullptr, export_gids = nullptr,
                 export_lids = nullptr;

@@ -1,5 +1,6 @@
 // Spatial domains by recursive coordinate bisection (Berger & Bokhari 1987), computed by Zoltan
-// (Boman et al., Sandia): boxes with equal particle counts, one per rank. Zoltan keeps the cuts,
+// (Boman et al., Sandia): boxes with equal summed particle weights (the work they cost), one per
+// rank. Zoltan keeps the cuts,
 // so any point has an owner and any box a list of ranks whose domains it touches (for ghosts).
 // Which rank owns what never changes a result (particle_domain.h), so Zoltan's own choices need
 // not be deterministic.
@@ -21,6 +22,7 @@ class ZoltanRcb {
   // The points of the current balance() call, which Zoltan's callbacks read.
   struct Points {
     const Vec3* x = nullptr;
+    const float* weight = nullptr;
     std::size_t count = 0;
   };
 
@@ -29,8 +31,8 @@ class ZoltanRcb {
   ZoltanRcb(const ZoltanRcb&) = delete;
   ZoltanRcb& operator=(const ZoltanRcb&) = delete;
 
-  // New cuts balancing the points every rank passes (its owned particles), one per particle.
-  void balance(const Vec3* points, std::size_t count);
+  // New cuts balancing the summed weights of the points every rank passes (its owned particles).
+  void balance(const Vec3* points, const float* weights, std::size_t count);
   // The rank whose domain holds x.
   int owner(const Vec3& x) const;
   // Rank r's domain box; unbounded sides are +-DBL_MAX.

@@ -234,6 +234,41 @@ TEST(SplitWorld, RebalancingEveryStepOrNeverChangesNoBit) {
 }
 
 // The shipped sample, coarser, its meshes found from here.
+// The domain cuts weigh a particle by the work it costs (mpi_domain.cpp): walls, which no solver
+// queries or moves, count a tenth of a liquid particle. Counted as one each, the walls around the
+// dam break's empty part filled whole shares: at 2 ranks one rank owned 2,600 of the 3,000 liquid
+// particles and waited for nothing while the other waited for it (bench_mpi_scaling, docs/mpi.md).
+// The slowest rank sets the step, so the most liquid any rank owns after the first cut must stay
+// within 1.4 times an even share (weights of one: 1.73, 1.8 and 1.9 times at 2, 3 and 4 ranks;
+// a tenth: 1.0, 1.32, 1.32; the cuts fall between the coarse scene's particle layers).
+TEST(SplitWorld, DomainsShareTheLiquidNotTheWalls) {
+  const nlohmann::json doc = small_dam_break();
+  testing::TestWorld tw(doc, 1);
+  World& world = *tw.world;
+  world.set_domain(std::make_unique<MpiDomain>(MPI_COMM_WORLD, world.settings().support_radius(),
+                                               10, world.settings().periodic));
+  world.step(world.next_time_step());
+  const Particles& p = world.particles();
+  std::int64_t counts[2] = {0, 0};  // liquid, walls owned here
+  for (std::size_t i = 0; i < p.owned_size(); ++i)
+    ++counts[p.type[i] == ParticleType::Liquid ? 0 : 1];
+  std::vector<std::int64_t> all(2 * std::size_t(ranks_here()));
+  MPI_Allgather(counts, 2, MPI_INT64_T, all.data(), 2, MPI_INT64_T, MPI_COMM_WORLD);
+  std::int64_t liquid = 0, most = 0;
+  std::string owned;
+  for (int r = 0; r < ranks_here(); ++r) {
+    const std::int64_t here = all[2 * std::size_t(r)];
+    liquid += here;
+    most = std::max(most, here);
+    owned += "\n  rank " + std::to_string(r) + ": " + std::to_string(here) + " liquid, " +
+             std::to_string(all[2 * std::size_t(r) + 1]) + " walls";
+  }
+  ASSERT_EQ(liquid, 3000) << "the scene's liquid, summed over the ranks";
+  const double share = double(liquid) / ranks_here();
+  EXPECT_LE(double(most), 1.4 * share)
+      << "the most liquid a rank owns, against an even share of " << share << ":" << owned;
+}
+
 nlohmann::json small_floating_objects() {
   auto doc = testing::load_sample_json("floating_objects.json");
   doc["particle_spacing"] = 0.04;

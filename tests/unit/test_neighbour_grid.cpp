@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -587,6 +588,44 @@ TEST(NeighbourGridOrder, ListsIdenticalForOneAndTwoThreads) {
   EXPECT_EQ(one.offsets, c.all.offsets);
   EXPECT_EQ(one.indices, c.all.indices);
   EXPECT_GT(one.total(), 0u);
+}
+
+// The documented order of a list (neighbour_grid.h): the 27 cells in a fixed order (z, then y,
+// then x, ascending), and a cell's targets in id order, whichever types they are. The grid stores
+// each cell's types as separate runs; a list of several types must merge them back by id.
+TEST(NeighbourGridOrder, ListsRunByCellThenIdWhateverTheTypes) {
+  const CloudCase& c = clustered_case();
+  const Particles& p = c.particles;
+  // The grid's cells: edge kCellSize from one cell below the lowest particle on every axis.
+  Vec3 lo{std::numeric_limits<Real>::max(), std::numeric_limits<Real>::max(),
+          std::numeric_limits<Real>::max()};
+  for (const Vec3& x : p.position)
+    lo = Vec3{std::min(lo.x, x.x), std::min(lo.y, x.y), std::min(lo.z, x.z)};
+  const Vec3 origin{lo.x - kCellSize, lo.y - kCellSize, lo.z - kCellSize};
+  auto cell = [&](const Vec3& x, int a) {
+    return std::int64_t(std::floor((double(x[a]) - double(origin[a])) / double(kCellSize)));
+  };
+  auto order_key = [&](std::uint32_t j) {
+    const Vec3& x = p.position[j];
+    return std::array<std::int64_t, 4>{cell(x, 2), cell(x, 1), cell(x, 0), std::int64_t(p.id[j])};
+  };
+  for (TypeMask target : {kAllTypes, TypeMask(kLiquidMask | kFrozenMask), kLiquidMask}) {
+    const NeighbourList list = find(p, kAllTypes, target, kCellSize);
+    std::size_t pairs = 0, mixed = 0, out_of_order = 0;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+      const std::uint32_t* of = list.of(i).first;
+      for (std::size_t k = 1; k < list.of(i).size(); ++k) {
+        ++pairs;
+        mixed += p.type[of[k - 1]] != p.type[of[k]];
+        out_of_order += !(order_key(of[k - 1]) < order_key(of[k]));
+      }
+    }
+    EXPECT_EQ(out_of_order, 0u) << "target mask " << int(target) << ": " << out_of_order << " of "
+                                << pairs << " consecutive entries out of order";
+    if (target != kLiquidMask) {
+      EXPECT_GT(mixed, pairs / 10) << "the case mixes too few types to test the merge";
+    }
+  }
 }
 
 // --- Small cases -------------------------------------------------------------------------------
