@@ -63,7 +63,10 @@ ParamSpec wall_pressure_spec() {
           1,
           "1: frozen walls carry the fluid's pressure, extrapolated hydrostatically (Adami et al. "
           "2012), so the layer on a wall reads rho0 g d; 0: Akinci et al. 2012's term alone, under "
-          "which it reads about 1.7 times that (docs/boundary-pressure.md)"};
+          "which it reads about 1.7 times that. Off by default: with it IISPH and DFSPH need eta "
+          "0.2 % to keep a tank's wall layer quiet, WCSPH tanks ring for longer, and PCISPH's "
+          "largest compression on DamBreakModel rises from 2.9 to 4.6 % "
+          "(docs/boundary-pressure.md)"};
 }
 
 ParamSpec stop_percentile_spec() {
