@@ -1,7 +1,7 @@
 // Spatial domains by recursive coordinate bisection (Berger & Bokhari 1987), computed by Zoltan
 // (Boman et al., Sandia): boxes with equal summed particle weights (the work they cost), one per
-// rank. Zoltan keeps the cuts,
-// so any point has an owner and any box a list of ranks whose domains it touches (for ghosts).
+// rank. Zoltan keeps the cuts, so any point has an owner and any box a list of ranks whose
+// domains it touches (for ghosts).
 // Which rank owns what never changes a result (particle_domain.h), so Zoltan's own choices need
 // not be deterministic.
 #pragma once

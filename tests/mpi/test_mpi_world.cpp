@@ -233,7 +233,6 @@ TEST(SplitWorld, RebalancingEveryStepOrNeverChangesNoBit) {
   expect_same_as_one_rank(small_dam_break(), 80, 0);
 }
 
-// The shipped sample, coarser, its meshes found from here.
 // The domain cuts weigh a particle by the work it costs (mpi_domain.cpp): walls, which no solver
 // queries or moves, count a tenth of a liquid particle. Counted as one each, the walls around the
 // dam break's empty part filled whole shares: at 2 ranks one rank owned 2,600 of the 3,000 liquid
@@ -269,6 +268,7 @@ TEST(SplitWorld, DomainsShareTheLiquidNotTheWalls) {
       << "the most liquid a rank owns, against an even share of " << share << ":" << owned;
 }
 
+// The shipped sample, coarser, its meshes found from here.
 nlohmann::json small_floating_objects() {
   auto doc = testing::load_sample_json("floating_objects.json");
   doc["particle_spacing"] = 0.04;

@@ -591,8 +591,8 @@ TEST(NeighbourGridOrder, ListsIdenticalForOneAndTwoThreads) {
 }
 
 // The documented order of a list (neighbour_grid.h): the 27 cells in a fixed order (z, then y,
-// then x, ascending), and a cell's targets in id order, whichever types they are. The grid stores
-// each cell's types as separate runs; a list of several types must merge them back by id.
+// then x, ascending), and a cell's targets in id order, whichever types they are. A grid that
+// kept each cell's types as separate runs would have to merge them back by id for such a list.
 TEST(NeighbourGridOrder, ListsRunByCellThenIdWhateverTheTypes) {
   const CloudCase& c = clustered_case();
   const Particles& p = c.particles;
