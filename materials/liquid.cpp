@@ -31,7 +31,7 @@ MaterialKind liquid_material_kind() {
           {"surface_tension", "N/m", 0, 0, 10,
            "surface tension coefficient sigma (water 0.0728); 0 disables it; the model is "
            "\"surface_tension_model\", the wetting of walls and bodies \"adhesion\" "
-           "(docs/surface-tension.md); it limits the time step: dt <= 0.25 sqrt(rho0 s^3 / (2 pi "
+           "(docs/surface-tension.md); it limits the time step: dt <= 0.15 sqrt(rho0 s^3 / (2 pi "
            "sigma))"},
           {"drag_viscosity", "Pa s", 1e-3, 1e-6, 1e3,
            "the liquid's physical dynamic viscosity mu, for the drag on grains (Di Felice "

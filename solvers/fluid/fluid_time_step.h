@@ -3,11 +3,13 @@
 // (Courant, Friedrichs & Lewy 1928, in the particle form of Monaghan 1992), the viscous limit
 // dt <= 1 / (nu stiffness) of viscosity_operator.h (half the stable step of the lattice's
 // Laplacian, 0.070 s^2 / nu at H = 2 s) and, with surface tension, the capillary limit
-// dt <= 0.25 sqrt(rho0 s^3 / (2 pi sigma)) (Brackbill, Kothe & Zemach 1992, with the factor of
-// Adami, Hu & Adams 2010), s the particle spacing. v_ref = sqrt(2 g H), H the height of the liquid
-// along gravity, is the speed the flow can reach by falling: a scene at rest still gets a step that
-// resolves the motion it is about to have (without it, PCISPH at rest ran at dt_max and blew up
-// at the tank corners: 4 ms at 2 cm spacing, 2 ms at 1.25 cm).
+// dt <= 0.15 sqrt(rho0 s^3 / (2 pi sigma)) (the form of Brackbill, Kothe & Zemach 1992; Adami, Hu
+// & Adams 2010 take 0.25 for their continuum force, under which a free drop of water with Akinci's
+// cohesion flew apart with PCISPH at nu <= 1e-4: docs/surface-tension.md), s the particle spacing.
+// v_ref = sqrt(2 g H), H the height of the liquid along gravity, is the speed the flow can reach by
+// falling: a scene at rest still gets a step that resolves the motion it is about to have (without
+// it, PCISPH at rest ran at dt_max and blew up at the tank corners: 4 ms at 2 cm spacing, 2 ms
+// at 1.25 cm).
 #pragma once
 
 #include "framework/core/real.h"
