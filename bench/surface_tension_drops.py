@@ -26,6 +26,7 @@ import math
 import numpy as np
 
 import upf
+from upf.kernels import cubic_spline, cubic_spline_gradient
 
 SPACING = 0.0025  # m
 RHO0 = 1000.0
@@ -79,8 +80,14 @@ def simulation(args, scene):
     return sim
 
 
+def volume_radius(count):
+    """The radius of a ball holding `count` particles of volume s^3."""
+    return SPACING * math.cbrt(3 * count / (4 * math.pi))
+
+
 def mean_pressure(args, scene, inside):
-    """Mean pressure of the liquid `inside(x)` selects, every fifth step from 0.2 s to --end."""
+    """Mean pressure of the liquid `inside(x)` selects, every fifth step from 0.2 s to --end, its
+    standard deviation, and the liquid's particle count."""
     sim = simulation(args, scene)
     samples = []
     while sim.time < args.end:
@@ -89,27 +96,21 @@ def mean_pressure(args, scene, inside):
             continue
         x, _, pressure = liquid(sim)
         samples.append(pressure[inside(x)].mean())
-    return float(np.mean(samples)), float(np.std(samples))
+    return float(np.mean(samples)), float(np.std(samples)), len(x)
 
 
 def laplace(args):
-    slab, slab_sd = mean_pressure(args, slab_scene(args, args.sigma),
-                                  lambda x: np.abs(x[:, 1] - np.median(x[:, 1])) < 0.01)
+    slab, slab_sd, _ = mean_pressure(args, slab_scene(args, args.sigma),
+                                     lambda x: np.abs(x[:, 1] - np.median(x[:, 1])) < 0.01)
     print(f"slab (flat face): {slab:.2f} Pa (sd {slab_sd:.2f})")
     for spacings in args.radii:
-        scene = drop_scene(args, spacings * SPACING, args.sigma)
-        count = [0]
-
-        def centre(x):
-            count[0] = len(x)
-            radius = SPACING * math.cbrt(3 * len(x) / (4 * math.pi))
-            return np.linalg.norm(x - np.median(x, axis=0), axis=1) < radius / 2
-
-        inside, inside_sd = mean_pressure(args, scene, centre)
-        radius = SPACING * math.cbrt(3 * count[0] / (4 * math.pi))
+        inside, inside_sd, count = mean_pressure(
+            args, drop_scene(args, spacings * SPACING, args.sigma),
+            lambda x: np.linalg.norm(x - np.median(x, axis=0), axis=1) < volume_radius(len(x)) / 2)
+        radius = volume_radius(count)
         expected = 2 * args.sigma / radius
         jump = inside - slab
-        print(f"drop R = {spacings} s ({count[0]} particles, R {radius * 1e3:.2f} mm): "
+        print(f"drop R = {spacings} s ({count} particles, R {radius * 1e3:.2f} mm): "
               f"{inside:.2f} Pa (sd {inside_sd:.2f}), jump {jump:.2f} Pa, "
               f"Laplace {expected:.2f} Pa, ratio {jump / expected:.3f}")
 
@@ -121,7 +122,7 @@ def rayleigh(args):
             is_liquid = np.asarray(p["type"]) == 0
             x = np.array(p["position"])
             count = int(is_liquid.sum())
-            radius = SPACING * math.cbrt(3 * count / (4 * math.pi))
+            radius = volume_radius(count)
             omega = math.sqrt(8 * args.sigma / (RHO0 * radius**3))
             rate = args.amplitude * omega / 2
             d = x - x[is_liquid].mean(axis=0)
@@ -166,15 +167,6 @@ class FittedCurvatureForce:
                     box[axis] = periodic[name][1] - periodic[name][0]
             self.box = np.array(box)
 
-    def kernel(self, r, gradient=False):
-        h = self.support / 2
-        q = r / h
-        if gradient:
-            d = np.where(q <= 1, -3 * q + 2.25 * q**2, -0.75 * (2 - q)**2)
-            return np.where(q < 2, d / (math.pi * h**4), 0.0)
-        w = np.where(q <= 1, 1 - 1.5 * q**2 + 0.75 * q**3, 0.25 * (2 - q)**3)
-        return np.where(q < 2, w / (math.pi * h**3), 0.0)
-
     def pairs(self, tree, x, reach):
         found = tree.query_pairs(reach, output_type="ndarray")
         i = np.concatenate([found[:, 0], found[:, 1]])
@@ -197,7 +189,7 @@ class FittedCurvatureForce:
         tree = self.tree_type(x, boxsize=self.box)
         i, j, d = self.pairs(tree, x, H)
         r = np.linalg.norm(d, axis=1)
-        g = (self.kernel(r, gradient=True) / np.maximum(r, 1e-12))[:, None] * d
+        g = cubic_spline_gradient(d, H)
         grad_c = np.stack([np.bincount(i, weights=volume * g[:, k], minlength=n)
                            for k in range(3)], axis=1)
         size = np.linalg.norm(grad_c, axis=1)
@@ -226,8 +218,8 @@ class FittedCurvatureForce:
         coefficients = np.linalg.solve(m + 1e-12 * self.s**4 * np.eye(6), b[:, :, None])[:, :, 0]
         kappa = np.where(fitted, -2 * (coefficients[:, 0] + coefficients[:, 2]), 0.0)
         near = fitted[i] & fitted[j]
-        w0 = float(self.kernel(np.zeros(1))[0])
-        weights = self.kernel(r[near])
+        w0 = float(cubic_spline(0.0, H))
+        weights = cubic_spline(r[near], H)
         total = np.bincount(i[near], weights=weights * kappa[j[near]], minlength=n) + w0 * kappa
         norm = np.bincount(i[near], weights=weights, minlength=n) + w0
         kappa = np.where(fitted, total / norm, 0.0)
