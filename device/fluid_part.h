@@ -62,6 +62,11 @@ class FluidPart final : public SolverPart<Backend> {
     surface_normal_ = setup_.surface_model != SurfaceTensionModel::None
                           ? &state.particles.vector_array(kSurfaceNormalField)
                           : nullptr;
+    if (setup_.surface_model == SurfaceTensionModel::ContinuumSurfaceForce) {
+      surface_curvature_ = &state.particles.scalar_array(kSurfaceCurvatureField);
+      surface_curvature_weight_ = &state.particles.scalar_array(kSurfaceCurvatureWeightField);
+      surface_smoothed_normal_ = &state.particles.vector_array(kSurfaceSmoothedNormalField);
+    }
     method_.bind(state.particles);
   }
 
@@ -123,13 +128,26 @@ class FluidPart final : public SolverPart<Backend> {
         wall_velocity = raw<Vec3>(state.particles.vector_array(kWallVelocityField));
         step.f.wall_velocity = wall_velocity;
       }
-      const ImplicitViscosityStats viscosity_stats = run_non_pressure_stages(
-          exec, step.owned, step.f,
-          {step.fluid_gradient, step.boundary_gradient, step.other_acceleration, step.density,
-           liquid_force, step.pressure, surface_normal_ ? raw<Vec3>(*surface_normal_) : nullptr,
-           wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{}, wall_velocity, n,
-           step.fluid_of_boundary, step.boundary_force, step.owns},
-          state.world.gravity, viscous);
+      NonPressureArrays arrays{step.fluid_gradient,
+                               step.boundary_gradient,
+                               step.other_acceleration,
+                               step.density,
+                               liquid_force,
+                               step.pressure,
+                               surface_normal_ ? raw<Vec3>(*surface_normal_) : nullptr,
+                               wall_list_ >= 0 ? state.lists.view(wall_list_) : NeighbourView{},
+                               wall_velocity,
+                               n,
+                               step.fluid_of_boundary,
+                               step.boundary_force,
+                               step.owns};
+      if (surface_curvature_) {
+        arrays.surface_curvature = raw<Real>(*surface_curvature_);
+        arrays.surface_curvature_weight = raw<Real>(*surface_curvature_weight_);
+        arrays.surface_smoothed_normal = raw<Vec3>(*surface_smoothed_normal_);
+      }
+      const ImplicitViscosityStats viscosity_stats =
+          run_non_pressure_stages(exec, step.owned, step.f, arrays, state.world.gravity, viscous);
       viscosity_iterations_ = viscosity_stats.iterations;
       method_.non_pressure(exec, step);
     });
@@ -189,6 +207,11 @@ class FluidPart final : public SolverPart<Backend> {
     f.surface.materials = std::uint32_t(setup_.rest_density.size());
     f.surface.has_adhesion = setup_.has_adhesion;
     if (surface_normal_) f.surface.normal = raw<Vec3>(*surface_normal_);
+    if (surface_curvature_) {
+      f.surface.curvature = raw<Real>(*surface_curvature_);
+      f.surface.curvature_weight = raw<Real>(*surface_curvature_weight_);
+      f.surface.smoothed_normal = raw<Vec3>(*surface_smoothed_normal_);
+    }
     f.slip_normal = slip_normal(state);
     return f;
   }
@@ -206,6 +229,9 @@ class FluidPart final : public SolverPart<Backend> {
   // The particles' scratch fields, as on the CPU: ghosts and periodic images carry them.
   vector<Vec3>* pressure_acceleration_ = nullptr;
   vector<Vec3>* surface_normal_ = nullptr;
+  vector<Real>* surface_curvature_ = nullptr;
+  vector<Real>* surface_curvature_weight_ = nullptr;
+  vector<Vec3>* surface_smoothed_normal_ = nullptr;
   vector<Real>* density_ = nullptr;
   vector<Real>* pressure_ = nullptr;
 };

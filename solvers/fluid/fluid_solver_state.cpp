@@ -35,6 +35,11 @@ void FluidSolverState::prepare(World& world, const std::vector<MaterialId>& mate
   }
   table.load(world, materials);
   if (surface_tension()) surface_normal_field = p.declare_scratch_vector(kSurfaceNormalField);
+  if (table.surface_model == SurfaceTensionModel::ContinuumSurfaceForce) {
+    p.declare_scratch_scalar(kSurfaceCurvatureField);
+    p.declare_scratch_scalar(kSurfaceCurvatureWeightField);
+    p.declare_scratch_vector(kSurfaceSmoothedNormalField);
+  }
   owned.set_materials(world.materials().size(), materials);
   bool wall_friction = false;
   for (MaterialId m : materials) wall_friction = wall_friction || table.boundary_viscosity[m] > 0;
@@ -64,6 +69,17 @@ FluidView FluidSolverState::begin_step(World& world) {
   f.wall_pressure = wall_pressure;
   surface_normal = surface_tension() ? world.particles()[surface_normal_field].data() : nullptr;
   f.surface.normal = surface_normal;
+  if (table.surface_model == SurfaceTensionModel::ContinuumSurfaceForce) {
+    surface_curvature = world.particles().scalar_field(kSurfaceCurvatureField).data();
+    surface_curvature_weight = world.particles().scalar_field(kSurfaceCurvatureWeightField).data();
+    surface_smoothed_normal = world.particles().vector_field(kSurfaceSmoothedNormalField).data();
+  } else {
+    surface_curvature = surface_curvature_weight = nullptr;
+    surface_smoothed_normal = nullptr;
+  }
+  f.surface.curvature = surface_curvature;
+  f.surface.curvature_weight = surface_curvature_weight;
+  f.surface.smoothed_normal = surface_smoothed_normal;
   wall_velocity = wall_list >= 0 ? world.particles()[wall_velocity_field].data() : nullptr;
   f.wall_velocity = wall_velocity;
   f.slip_normal = slip_normal(world);
@@ -101,16 +117,25 @@ void FluidSolverState::shared_forces(World& world, const FluidView& f, Real* den
                owned.materials(),
                world.particles().size(),
                dt};
-  viscosity_stats = run_non_pressure_stages(
-      world.executor(), owned.range(), f,
-      {fluid_gradient.data(), boundary_gradient.data(), other_acceleration.data(), density,
-       liquid_force, pressure, surface_normal,
-       wall_list >= 0 ? view_of(world.neighbours(wall_list)) : NeighbourView{}, wall_velocity,
-       world.particles().size(),
-       reaction_list >= 0 ? view_of(world.neighbours(reaction_list)) : NeighbourView{},
-       reaction_list >= 0 ? world.coupling()[CouplingArray::BoundaryForce].data() : nullptr,
-       owned.materials()},
-      world.settings().gravity, viscous);
+  NonPressureArrays arrays{
+      fluid_gradient.data(),
+      boundary_gradient.data(),
+      other_acceleration.data(),
+      density,
+      liquid_force,
+      pressure,
+      surface_normal,
+      wall_list >= 0 ? view_of(world.neighbours(wall_list)) : NeighbourView{},
+      wall_velocity,
+      world.particles().size(),
+      reaction_list >= 0 ? view_of(world.neighbours(reaction_list)) : NeighbourView{},
+      reaction_list >= 0 ? world.coupling()[CouplingArray::BoundaryForce].data() : nullptr,
+      owned.materials()};
+  arrays.surface_curvature = surface_curvature;
+  arrays.surface_curvature_weight = surface_curvature_weight;
+  arrays.surface_smoothed_normal = surface_smoothed_normal;
+  viscosity_stats = run_non_pressure_stages(world.executor(), owned.range(), f, arrays,
+                                            world.settings().gravity, viscous);
 }
 
 void FluidSolverState::predict_unowned(const World& world, const FluidView& f, Vec3* x_star,

@@ -65,6 +65,11 @@ struct FluidSolverState {
   // neighbours read it and ghosts on other ranks must carry it.
   FieldHandle<Vec3> surface_normal_field;
   Vec3* surface_normal = nullptr;  // begin_step points it at the field's values
+  // Per particle, with the continuum surface force: its fitted curvatures and their weights
+  // (continuum_surface_force.h), fields for the same reason; begin_step points them.
+  Real* surface_curvature = nullptr;
+  Real* surface_curvature_weight = nullptr;
+  Vec3* surface_smoothed_normal = nullptr;
   bool surface_tension() const { return table.surface_model != SurfaceTensionModel::None; }
   // With implicit viscosity (implicit_viscosity.h): its per-particle fields, the last step's
   // viscous acceleration (the warm start, kept across steps and in checkpoints) and the last

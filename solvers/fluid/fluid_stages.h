@@ -19,6 +19,10 @@ namespace upf {
 // binds: ghosts and periodic images carry them, and neighbours read the normals.
 inline constexpr const char* kPressureAccelerationField = "fluid.pressure_acceleration";
 inline constexpr const char* kSurfaceNormalField = "fluid.surface_normal";
+// The continuum surface force's (continuum_surface_force.h): neighbours read them too.
+inline constexpr const char* kSurfaceCurvatureField = "fluid.surface_curvature";
+inline constexpr const char* kSurfaceCurvatureWeightField = "fluid.surface_curvature_weight";
+inline constexpr const char* kSurfaceSmoothedNormalField = "fluid.surface_smoothed_normal";
 
 // Density and kernel gradients at the current positions (fluid_forces.h), and with
 // `surface_normal` not null Akinci's surface normals, which the surface tension of i's neighbours
@@ -109,9 +113,10 @@ struct CompressionValue {
 
 // The non-pressure part every fluid solver's step starts with, for any executor (the CPU's, or
 // the device pipeline's): density and kernel gradients at the current positions, with the surface
-// normals when f.surface is on (into `surface_normal`, the array f.surface.normal reads), then
-// a_other = g + viscosity + surface forces, plus F / m from other materials when `liquid_force`
-// is not null; with `viscous.arrays` (implicit viscosity) the viscosity comes last, solved at the
+// normals when f.surface is on (into `surface_normal`, the array f.surface.normal reads), the
+// continuum surface force's smoothed normals and fitted curvatures when it is the model, then
+// a_other = g + viscosity + surface forces, plus F / m from other materials when `liquid_force` is
+// not null; with `viscous.arrays` (implicit viscosity) the viscosity comes last, solved at the
 // end-of-step velocities these accelerations give (implicit_viscosity.h): its statistics are
 // returned, and a solve that does not converge throws ConvergenceError.
 struct NonPressureArrays {
@@ -133,6 +138,11 @@ struct NonPressureArrays {
   NeighbourView liquid_of_body{};
   Vec3* boundary_force = nullptr;
   OwnedMaterials owns{};
+  // With the continuum surface force: per particle, f.surface.curvature's, curvature_weight's and
+  // smoothed_normal's arrays, written after the normals.
+  Real* surface_curvature = nullptr;
+  Real* surface_curvature_weight = nullptr;
+  Vec3* surface_smoothed_normal = nullptr;
 };
 
 template <class Executor>
@@ -144,6 +154,11 @@ ImplicitViscosityStats run_non_pressure_stages(const Executor& exec, ParticleRan
     exec.run(all_particles(a.all), WallVelocityStage{f, a.liquid_of_boundary, a.wall_velocity});
   exec.run(owned, DensityAndGradientsStage{f, a.fluid_gradient, a.boundary_gradient, a.density,
                                            f.surface.on() ? a.surface_normal : nullptr});
+  if (f.surface.model == SurfaceTensionModel::ContinuumSurfaceForce) {
+    exec.run(owned, SmoothedNormalStage{f, a.surface_smoothed_normal});
+    exec.run(owned, FittedCurvatureStage{f, a.surface_smoothed_normal, a.surface_curvature,
+                                         a.surface_curvature_weight});
+  }
   exec.run(owned, GravityAndViscosityStage{f, a.density, a.fluid_gradient, a.pressure, gravity,
                                            a.other_acceleration});
   if (a.liquid_force)

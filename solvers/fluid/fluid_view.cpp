@@ -51,12 +51,16 @@ void FluidMaterialTable::load(const World& world, const std::vector<MaterialId>&
   if (surface_model == SurfaceTensionModel::None) return;
   const double support = world.settings().support_radius();
   const double spacing = world.settings().spacing;
+  const double face_gradient = csf_face_gradient_per_area(spacing, support);
   for (std::size_t m = 0; m < n; ++m) {
     if (mats[m].type != ParticleType::Liquid) continue;
     const double sigma = mats[m].param("surface_tension");
-    // Akinci's gamma, the model's coefficient; adhesion is a ratio to it (docs/surface-tension.md).
+    // Akinci's gamma: that model's coefficient, and every model's adhesion is a ratio to it
+    // (docs/surface-tension.md). The continuum force's: sigma / (c0 rho0).
     const double gamma = akinci_gamma_for_sigma(sigma, rest_density[m], spacing, support);
-    cohesion[m] = Real(gamma);
+    cohesion[m] = surface_model == SurfaceTensionModel::ContinuumSurfaceForce
+                      ? Real(sigma / (face_gradient * rest_density[m]))
+                      : Real(gamma);
     max_sigma_over_density = std::max(max_sigma_over_density, Real(sigma) / rest_density[m]);
     for (const auto& [name, ratio] : mats[m].adhesion) {
       const auto boundary = world.materials().find(name);

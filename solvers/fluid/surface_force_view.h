@@ -13,18 +13,25 @@ namespace upf {
 
 enum class SurfaceTensionModel : std::uint8_t {
   None,
-  Akinci2013,  // cohesion + curvature (akinci_kernels.h)
+  Akinci2013,             // cohesion + curvature (akinci_kernels.h)
+  ContinuumSurfaceForce,  // Brackbill et al. 1992 (continuum_surface_force.h)
 };
 
 struct SurfaceForceView {
   SurfaceTensionModel model = SurfaceTensionModel::None;
-  // Per material: the model's coefficient, Akinci's gamma (0: no tension).
+  // Per material: the model's coefficient (0: no tension): Akinci's gamma, or the continuum
+  // force's sigma / (c0 rho0) [m^3/s^2] (continuum_surface_force.h).
   const Real* cohesion = nullptr;
   // Per (liquid material, boundary material) pair, row-major over `materials`: Akinci's beta.
   const Real* adhesion = nullptr;
   std::uint32_t materials = 0;
   const Vec3* normal = nullptr;  // per particle, written by the density pass
-  bool has_adhesion = false;     // some pair has a positive beta
+  // Per particle, the continuum force's fitted curvature [1/m], 1 where it was fitted (else 0),
+  // and the smoothed surface normal (continuum_surface_force.h's stages write them).
+  const Real* curvature = nullptr;
+  const Real* curvature_weight = nullptr;
+  const Vec3* smoothed_normal = nullptr;
+  bool has_adhesion = false;  // some pair has a positive beta
 
   UPF_HD bool on() const { return model != SurfaceTensionModel::None; }
   UPF_HD Real adhesion_between(std::uint32_t liquid, std::uint32_t boundary) const {

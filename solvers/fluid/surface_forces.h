@@ -15,6 +15,7 @@
 #pragma once
 
 #include "solvers/fluid/akinci_kernels.h"
+#include "solvers/fluid/continuum_surface_force.h"
 #include "solvers/fluid/fluid_view.h"
 
 namespace upf {
@@ -72,9 +73,11 @@ UPF_HD inline Vec3 akinci_adhesion_acceleration(const FluidView& f, std::uint32_
   return a * f.rest_density[mi];
 }
 
-// The surface forces on liquid particle i, as an acceleration.
+// The surface forces on liquid particle i, as an acceleration: the model's tension, then adhesion.
 UPF_HD inline Vec3 surface_acceleration(const FluidView& f, const Real* density, std::uint32_t i) {
-  Vec3 a = akinci_tension_acceleration(f, density, i);
+  Vec3 a = f.surface.model == SurfaceTensionModel::ContinuumSurfaceForce
+               ? csf_tension_acceleration(f, i)
+               : akinci_tension_acceleration(f, density, i);
   if (f.surface.has_adhesion) a += akinci_adhesion_acceleration(f, i);
   return a;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "framework/kernels/cubic_spline.h"
 #include "solvers/fluid/akinci_kernels.h"
 
 namespace upf {
@@ -12,11 +13,18 @@ void register_surface_tension_models(Registry& registry) {
        "pairwise cohesion and curvature minimisation, with adhesion to walls and bodies",
        "Akinci, Akinci & Teschner 2013, \"Versatile surface tension and adhesion for SPH fluids\", "
        "ACM TOG 32(6)"});
+  registry.add_surface_tension_model(
+      {"csf",
+       "continuum surface force on the surface particles, with the curvature fitted to their "
+       "smoothed normals; adhesion as akinci2013's",
+       "Brackbill, Kothe & Zemach 1992, \"A continuum method for modeling surface tension\", "
+       "J. Comput. Phys. 100"});
 }
 
 SurfaceTensionModel surface_tension_model_named(const std::string& name) {
   // Empty: the liquid names none, and the first registered is the default.
   if (name.empty() || name == "akinci2013") return SurfaceTensionModel::Akinci2013;
+  if (name == "csf") return SurfaceTensionModel::ContinuumSurfaceForce;
   return SurfaceTensionModel::None;
 }
 
@@ -66,6 +74,28 @@ double akinci_sigma_per_gamma(double rest_density, double spacing, double suppor
 
 double akinci_gamma_for_sigma(double sigma, double rest_density, double spacing, double support) {
   return sigma / akinci_sigma_per_gamma(rest_density, spacing, support);
+}
+
+double csf_face_gradient_per_area(double spacing, double support) {
+  // Each layer's |sum_j V_j grad W_ij| over the half space of layers above it is missing, times
+  // its volume per face area, s^3 / s^2.
+  const CubicSplineKernel kernel{Real(support)};
+  const int reach = reach_in_spacings(spacing, support);
+  const double volume = spacing * spacing * spacing;
+  double sum = 0;
+  for (int depth = 0; depth < reach; ++depth) {
+    double gradient = 0;  // along the face's normal; the lateral parts cancel
+    for (int below = 0; below < 2 * reach + depth; ++below)
+      for (int a = -reach; a <= reach; ++a)
+        for (int b = -reach; b <= reach; ++b) {
+          const Vec3 r{Real(a * spacing), Real(b * spacing), Real((below - depth) * spacing)};
+          Vec3 g;
+          (void)kernel.value_and_gradient(r, g);
+          gradient += double(g.z) * volume;
+        }
+    sum += std::abs(gradient) * spacing;
+  }
+  return sum;
 }
 
 }  // namespace upf

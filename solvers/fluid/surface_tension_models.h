@@ -23,4 +23,10 @@ SurfaceTensionModel surface_tension_model_named(const std::string& name);
 double akinci_gamma_for_sigma(double sigma, double rest_density, double spacing,
                               double support_radius);
 
+// The continuum surface force's c0 (continuum_surface_force.h): the colour gradient
+// |sum_j V_j grad W_ij| of the initial lattice (V = s^3) summed over the particles under a flat
+// face, per unit area of the face. 0.51 at H = 2 s: the particles see only the inner half of the
+// colour's jump.
+double csf_face_gradient_per_area(double spacing, double support_radius);
+
 }  // namespace upf

@@ -31,5 +31,13 @@ TEST(DevicePipelineOmp, PeriodicSurfaceTensionIsBitwiseTheCpuPath) {
   expect_parity(doc, 40);
 }
 
+// The continuum surface force's curvatures are fitted to the images' positions too.
+TEST(DevicePipelineOmp, PeriodicContinuumSurfaceForceIsBitwiseTheCpuPath) {
+  auto doc = testing::periodic_dam_break("pcisph");
+  doc["materials"]["water"]["surface_tension"] = 0.5;
+  doc["materials"]["water"]["surface_tension_model"] = "csf";
+  expect_parity(doc, 40);
+}
+
 }  // namespace
 }  // namespace upf::device_test

@@ -103,6 +103,18 @@ TEST(DevicePipelineOmp, SurfaceTensionAndAdhesionAreBitwiseTheCpuPath) {
   }
 }
 
+// The continuum surface force (continuum_surface_force.h): its curvature pass between the normals
+// and the forces, and its neighbours' curvatures in the forces.
+TEST(DevicePipelineOmp, ContinuumSurfaceForceIsBitwiseTheCpuPath) {
+  auto doc = testing::cube_shot_into_water({{"name", "pcisph"}});
+  doc["particle_spacing"] = 0.04;
+  doc["bodies"][0]["velocity"] = {2.0, 0, 0};
+  doc["materials"]["water"]["surface_tension"] = 0.5;
+  doc["materials"]["water"]["surface_tension_model"] = "csf";
+  doc["materials"]["water"]["adhesion"] = {{"walls", 0.5}};
+  expect_parity(doc, 120);
+}
+
 // A frozen paddle turning in the dam break: a kinematic body's particles placed on the device.
 TEST(DevicePipelineOmp, KinematicPaddleIsBitwiseTheCpuPath) {
   auto doc = small_dam_break();

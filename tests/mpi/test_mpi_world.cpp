@@ -185,6 +185,15 @@ TEST(SplitWorld, SurfaceTensionIsBitwiseTheOneRankRun) {
   }
 }
 
+// The continuum surface force reads its neighbours' fitted curvatures: a second field the ghosts
+// carry, written by a stage of its own.
+TEST(SplitWorld, ContinuumSurfaceForceIsBitwiseTheOneRankRun) {
+  auto doc = small_dam_break("dfsph");
+  doc["materials"]["water"]["surface_tension"] = 0.5;
+  doc["materials"]["water"]["surface_tension_model"] = "csf";
+  expect_same_as_one_rank(doc, 60);
+}
+
 // Implicit viscosity: the conjugate gradient reads its neighbours' search directions (fields the
 // ghosts carry) and steers by exact global dot products, so its iteration counts and its bits are
 // the one-rank run's; the no-slip walls' velocities come from liquid on other ranks too.
