@@ -15,9 +15,10 @@ crosses its mean, against Rayleigh's period 2 pi / sqrt(8 sigma / (rho0 R^3)).
     PYTHONPATH=build/release/python /usr/bin/python3 bench/surface_tension_drops.py rayleigh \
         [--radii 8] [--viscosity 1e-5] [--end 1.5]
 
---prototype-csf replaces the registered model by a Python force (needs python3-scipy): Brackbill
-et al. 1992's continuum surface force with the curvature of a quadric fitted to the surface
-particles within 1.5 H, the lead for a second model measured on 2026-12-07. Figures, not a test.
+--model csf measures the registered continuum surface force. --prototype-csf replaces the model by
+a Python force (needs python3-scipy): the continuum surface force with the curvature of a quadric
+fitted to the surface particles within 1.5 H, the prototype that led to `csf` (2026-12-07).
+Figures, not a test.
 """
 
 import argparse
