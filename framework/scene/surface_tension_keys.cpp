@@ -98,12 +98,23 @@ void check_surface_tension_keys(JsonInput& in, const Registry& registry,
                        " material; adhesion names frozen or rigid materials (walls, bodies)");
       }
     }
-    if (!m.adhesion.empty() && m.param("surface_tension") <= 0)
-      in.problem(
-          path + (m.contact_angle.size() == m.adhesion.size() ? "/contact_angle" : "/adhesion"),
-          "adhesion is a ratio to the surface tension's cohesion, and surface_tension is 0: "
-          "set /materials/" +
-              m.name + "/surface_tension (N/m, water 0.0728)");
+    const std::string wetting =
+        path + (m.contact_angle.size() == m.adhesion.size() ? "/contact_angle" : "/adhesion");
+    if (!m.adhesion.empty() && m.param("surface_tension") <= 0) {
+      in.problem(wetting,
+                 "adhesion is a ratio to the surface tension's cohesion, and surface_tension is 0: "
+                 "set /materials/" +
+                     m.name + "/surface_tension (N/m, water 0.0728)");
+    } else if (!m.adhesion.empty()) {
+      const std::string model = surface_tension_model_of(m, registry);
+      for (const auto& info : registry.surface_tension_models())
+        if (info.name == model && !info.adhesion)
+          in.problem(wetting, "the surface tension model '" + model +
+                                  "' has no adhesion: without cohesion to hold it, the liquid "
+                                  "would spread over every wall it touches as a film "
+                                  "(docs/surface-tension.md); for wetting use "
+                                  "surface_tension_model 'akinci2013', or remove this key");
+    }
   }
   // One solver instance, one model: a pair of its liquids must not meet two force laws.
   for (std::size_t a = 0; a < scene.materials.size(); ++a)

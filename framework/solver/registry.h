@@ -41,6 +41,9 @@ struct SurfaceTensionModelInfo {
   std::string name;  // "akinci2013"
   std::string summary;
   std::string reference;  // the paper
+  // The model pulls liquid toward walls and bodies by the liquid's "adhesion" (Akinci's adhesion,
+  // solvers/fluid/surface_forces.h); a scene that asks a model without it for wetting is refused.
+  bool adhesion = true;
 };
 
 class Registry {

@@ -16,9 +16,10 @@ void register_surface_tension_models(Registry& registry) {
   registry.add_surface_tension_model(
       {"csf",
        "continuum surface force on the surface particles, with the curvature fitted to their "
-       "smoothed normals; adhesion as akinci2013's",
+       "smoothed normals; no adhesion yet (liquid beads on walls at about 157 degrees)",
        "Brackbill, Kothe & Zemach 1992, \"A continuum method for modeling surface tension\", "
-       "J. Comput. Phys. 100"});
+       "J. Comput. Phys. 100",
+       false});
 }
 
 SurfaceTensionModel surface_tension_model_named(const std::string& name) {

@@ -53,6 +53,21 @@ TEST_F(Cli, ContactAngleMustBeReachableAndNotBesideARatio) {
   EXPECT_EQ(run_upf("validate " + write(doc)).code, 0);
 }
 
+// The continuum surface force has no cohesion to balance Akinci's adhesion: asking it for wetting,
+// by ratio or by angle, is refused with the model's name and the one that wets.
+TEST_F(Cli, WettingWithAModelWithoutAdhesionIsRefused) {
+  auto doc = sample();
+  doc["materials"]["water"]["surface_tension"] = 0.07;
+  doc["materials"]["water"]["surface_tension_model"] = "csf";
+  doc["materials"]["water"]["adhesion"] = {{"walls", 1.0}};
+  expect_rejected(doc, {"/materials/water/adhesion", "'csf' has no adhesion", "'akinci2013'"});
+  doc["materials"]["water"].erase("adhesion");
+  doc["materials"]["water"]["contact_angle"] = {{"walls", 120}};
+  expect_rejected(doc, {"/materials/water/contact_angle", "'csf' has no adhesion"});
+  doc["materials"]["water"].erase("contact_angle");
+  EXPECT_EQ(run_upf("validate " + write(doc)).code, 0);
+}
+
 TEST_F(Cli, AdhesionWithoutSurfaceTensionSaysWhatToSet) {
   auto doc = sample();
   doc["materials"]["water"]["adhesion"] = {{"walls", 1.0}};

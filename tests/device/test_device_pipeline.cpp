@@ -111,7 +111,6 @@ TEST(DevicePipelineOmp, ContinuumSurfaceForceIsBitwiseTheCpuPath) {
   doc["bodies"][0]["velocity"] = {2.0, 0, 0};
   doc["materials"]["water"]["surface_tension"] = 0.5;
   doc["materials"]["water"]["surface_tension_model"] = "csf";
-  doc["materials"]["water"]["adhesion"] = {{"walls", 0.5}};
   expect_parity(doc, 120);
 }
 
