@@ -67,10 +67,9 @@ struct DfsphSettings {
 
 // The divergence-free solver leaves particles with fewer neighbours (fluid and boundary) alone:
 // near the free surface the rate of change of the density is that of a particle losing or gaining
-// neighbours, not a compression. SPlisHSPlasH's DFSPH leaves out fewer than 20 in 3D; at 20 the
-// surface layers (20 to 31 of the 33 an inner particle has at H = 2 s) pushed back on every inward
-// motion of the surface, and a drop's n = 2 period under the continuum force came out 10 % short
-// of Rayleigh's (1.222 s against 1.360 s; 1.329 s at 27, 1.374 s at 32; docs/surface-tension.md).
+// neighbours, not a compression. 27 of the 33 an inner particle has at H = 2 s, not
+// SPlisHSPlasH's 20: at 20 the surface layers pushed back on every inward motion of a free
+// surface and stiffened a drop's oscillation by 10 % (measured in docs/surface-tension.md).
 inline constexpr std::uint32_t kDfsphMinDivergenceNeighbours = 27;
 
 struct ClearDfsphStiffnessStage {
